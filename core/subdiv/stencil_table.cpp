@@ -1,0 +1,145 @@
+#include "subdiv/stencil_table.h"
+
+#include <algorithm>
+#include <cassert>
+#include <numeric>
+
+#include "util/parallel_for.h"
+
+namespace sculpt {
+
+StencilTable::StencilTable(uint32_t numColumns, std::vector<uint32_t> offsets,
+                           std::vector<uint32_t> indices, std::vector<double> weights)
+    : numColumns_(numColumns),
+      offsets_(std::move(offsets)),
+      indices_(std::move(indices)),
+      weights_(std::move(weights)) {
+  assert(!offsets_.empty() && offsets_.back() == indices_.size());
+  assert(indices_.size() == weights_.size());
+}
+
+StencilTable StencilTable::identity(uint32_t n) {
+  std::vector<uint32_t> offsets(n + 1), indices(n);
+  std::iota(offsets.begin(), offsets.end(), 0u);
+  std::iota(indices.begin(), indices.end(), 0u);
+  return StencilTable(n, std::move(offsets), std::move(indices), std::vector<double>(n, 1.0));
+}
+
+void StencilTable::apply(const Points& src, Points& dst) const {
+  assert(src.rows() == numColumns_);
+  dst.resize(numRows(), 3);
+  const double* in = src.data();
+  double* out = dst.data();
+  parallelChunks(numRows(), 4096, [&](uint32_t begin, uint32_t end, unsigned) {
+    for (uint32_t r = begin; r < end; ++r) {
+      double x = 0, y = 0, z = 0;
+      for (uint32_t k = offsets_[r]; k < offsets_[r + 1]; ++k) {
+        const double w = weights_[k];
+        const double* p = in + 3 * size_t(indices_[k]);
+        x += w * p[0];
+        y += w * p[1];
+        z += w * p[2];
+      }
+      out[3 * size_t(r)] = x;
+      out[3 * size_t(r) + 1] = y;
+      out[3 * size_t(r) + 2] = z;
+    }
+  });
+}
+
+void StencilTable::applyTranspose(const Points& src, Points& dst) const {
+  assert(src.rows() == numRows());
+  // Scatter; serial because rows write to shared columns. Used off the per-frame path.
+  dst.setZero(numColumns_, 3);
+  for (uint32_t r = 0; r < numRows(); ++r)
+    for (uint32_t k = offsets_[r]; k < offsets_[r + 1]; ++k)
+      dst.row(indices_[k]) += weights_[k] * src.row(r);
+}
+
+std::vector<double> StencilTable::rowSums() const {
+  std::vector<double> sums(numRows(), 0.0);
+  for (uint32_t r = 0; r < numRows(); ++r)
+    for (uint32_t k = offsets_[r]; k < offsets_[r + 1]; ++k) sums[r] += weights_[k];
+  return sums;
+}
+
+StencilTable StencilTable::compose(const StencilTable& outer, const StencilTable& inner) {
+  assert(outer.numColumns() == inner.numRows());
+  const uint32_t rows = outer.numRows();
+  const unsigned workers = workerCount();
+  // Each worker fills its own block of rows with a dense accumulator over inner's columns.
+  struct Block {
+    std::vector<uint32_t> sizes, indices;
+    std::vector<double> weights;
+  };
+  std::vector<Block> blocks(workers);
+  parallelChunks(rows, 1024, [&](uint32_t begin, uint32_t end, unsigned worker) {
+    Block& block = blocks[worker];
+    block.sizes.reserve(end - begin);
+    block.indices.reserve(size_t(end - begin) * 32);
+    block.weights.reserve(size_t(end - begin) * 32);
+    std::vector<double> accumulator(inner.numColumns(), 0.0);
+    std::vector<uint8_t> touched(inner.numColumns(), 0);
+    std::vector<uint32_t> columns;
+    for (uint32_t r = begin; r < end; ++r) {
+      columns.clear();
+      for (uint32_t k = outer.offsets_[r]; k < outer.offsets_[r + 1]; ++k) {
+        const uint32_t mid = outer.indices_[k];
+        const double w = outer.weights_[k];
+        for (uint32_t j = inner.offsets_[mid]; j < inner.offsets_[mid + 1]; ++j) {
+          const uint32_t col = inner.indices_[j];
+          if (!touched[col]) {
+            touched[col] = 1;
+            columns.push_back(col);
+          }
+          accumulator[col] += w * inner.weights_[j];
+        }
+      }
+      std::sort(columns.begin(), columns.end());
+      for (uint32_t col : columns) {
+        block.indices.push_back(col);
+        block.weights.push_back(accumulator[col]);
+        accumulator[col] = 0.0;
+        touched[col] = 0;
+      }
+      block.sizes.push_back(static_cast<uint32_t>(columns.size()));
+    }
+  });
+  std::vector<uint32_t> offsets{0}, indices;
+  std::vector<double> weights;
+  size_t total = 0;
+  for (const Block& block : blocks) total += block.indices.size();
+  offsets.reserve(rows + 1);
+  indices.reserve(total);
+  weights.reserve(total);
+  for (const Block& block : blocks) {
+    for (uint32_t size : block.sizes) offsets.push_back(offsets.back() + size);
+    indices.insert(indices.end(), block.indices.begin(), block.indices.end());
+    weights.insert(weights.end(), block.weights.begin(), block.weights.end());
+  }
+  return StencilTable(inner.numColumns(), std::move(offsets), std::move(indices),
+                      std::move(weights));
+}
+
+StencilChain::StencilChain(std::vector<StencilTable> levels) : levels_(std::move(levels)) {}
+
+uint32_t StencilChain::numRows() const { return levels_.empty() ? 0 : levels_.back().numRows(); }
+uint32_t StencilChain::numColumns() const {
+  return levels_.empty() ? 0 : levels_.front().numColumns();
+}
+
+void StencilChain::apply(const Points& src, Points& dst) const {
+  if (levels_.empty()) {
+    dst = src;
+    return;
+  }
+  scratch_.resize(levels_.size());
+  const Points* current = &src;
+  for (size_t i = 0; i + 1 < levels_.size(); ++i) {
+    levels_[i].apply(*current, scratch_[i]);
+    current = &scratch_[i];
+  }
+  levels_.back().apply(*current, dst);
+}
+
+}  // namespace sculpt

@@ -1,0 +1,18 @@
+#pragma once
+// A minimal fork-join loop over index ranges on all hardware threads. Chunks are contiguous so
+// that each worker can write its own output block without synchronisation.
+
+#include <cstdint>
+#include <functional>
+
+namespace sculpt {
+
+/// Number of worker threads used by parallelFor (hardware threads, at least 1).
+unsigned workerCount();
+
+/// Calls body(begin, end, worker) for disjoint contiguous chunks covering [0, n). Runs inline
+/// when n < minParallel. Chunk k is handled by worker k, so per-worker buffers may be indexed by it.
+void parallelChunks(uint32_t n, uint32_t minParallel,
+                    const std::function<void(uint32_t begin, uint32_t end, unsigned worker)>& body);
+
+}  // namespace sculpt

@@ -1,0 +1,61 @@
+#!/usr/bin/env bash
+# Installs the dependencies, builds the program and runs it on the default model.
+#
+#   scripts/run.sh [CONTROL.json]      (default: assets/block3.json)
+#
+# The window (`sculpt`) does not exist yet. Until it does, this builds `sculpt-cli`, prints
+# `sculpt-cli info` of the model at level 2 and writes its level-2 subdivision to out/:
+#   out/<name>_level2.vtk            the level-2 cell complex (open it in ParaView)
+#   out/<name>_level2_boundary.obj   its boundary surface
+set -euo pipefail
+
+ROOT="$(cd "$(dirname "${BASH_SOURCE[0]}")/.." && pwd)"
+cd "$ROOT"
+
+if [[ $# -gt 1 || "${1:-}" == "-h" || "${1:-}" == "--help" ]]; then
+  sed -n '2,9p' "${BASH_SOURCE[0]}" | sed 's/^# \{0,1\}//'
+  [[ $# -gt 1 ]] && exit 2
+  exit 0
+fi
+ASSET="${1:-assets/block3.json}"
+if [[ ! -f "$ASSET" ]]; then
+  echo "scripts/run.sh: no such file: $ASSET" >&2
+  exit 2
+fi
+NAME="$(basename "$ASSET")"
+NAME="${NAME%.*}"
+LEVELS=2
+BUILD_DIR="build"
+JOBS="$(nproc 2>/dev/null || echo 2)"
+CLI="$ROOT/$BUILD_DIR/bin/sculpt-cli"
+
+stage() { printf '\n==== %s ====\n' "$*"; }
+
+stage "1/4 dependencies (scripts/install-deps.sh)"
+bash "$ROOT/scripts/install-deps.sh"
+
+# Same configuration as scripts/test.sh, so that both share build/ without reconfiguring.
+stage "2/4 configure (Release) into $BUILD_DIR/"
+cmake -S "$ROOT" -B "$ROOT/$BUILD_DIR" -G Ninja \
+  -DCMAKE_BUILD_TYPE=Release \
+  -DSCULPT_BUILD_TESTS=ON \
+  -DSCULPT_WERROR=ON \
+  -DSCULPT_SANITIZE="" \
+  -DCMAKE_CXX_COMPILER_LAUNCHER=ccache
+
+stage "3/4 build sculpt-cli with $JOBS jobs"
+cmake --build "$ROOT/$BUILD_DIR" --parallel "$JOBS" --target sculpt-cli
+
+stage "4/4 run on $ASSET (level $LEVELS)"
+mkdir -p "$ROOT/out"
+VTK="out/${NAME}_level${LEVELS}.vtk"
+OBJ="out/${NAME}_level${LEVELS}_boundary.obj"
+echo "\$ $BUILD_DIR/bin/sculpt-cli info $ASSET --levels $LEVELS"
+"$CLI" info "$ASSET" --levels "$LEVELS"
+echo
+echo "\$ $BUILD_DIR/bin/sculpt-cli subdivide $ASSET --levels $LEVELS --out $VTK --boundary $OBJ"
+"$CLI" subdivide "$ASSET" --levels "$LEVELS" --out "$VTK" --boundary "$OBJ"
+echo
+echo "wrote:"
+echo "  $ROOT/$VTK   (level-$LEVELS cell complex, legacy VTK: open it in ParaView)"
+echo "  $ROOT/$OBJ   (its boundary surface, OBJ)"

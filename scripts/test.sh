@@ -1,0 +1,68 @@
+#!/usr/bin/env bash
+# Installs the dependencies, configures, builds and runs every test.
+#
+#   scripts/test.sh              Release build in build/, then ctest
+#   scripts/test.sh --sanitize   RelWithDebInfo build in build-sanitize/ with
+#                                AddressSanitizer + UndefinedBehaviorSanitizer, then ctest
+#
+# Warnings in our own code are errors here (-DSCULPT_WERROR=ON). Tests that open windows run under
+# xvfb-run when there is no $DISPLAY. The exit code is that of the first failing stage.
+set -euo pipefail
+
+ROOT="$(cd "$(dirname "${BASH_SOURCE[0]}")/.." && pwd)"
+cd "$ROOT"
+
+usage() {
+  sed -n '2,9p' "${BASH_SOURCE[0]}" | sed 's/^# \{0,1\}//'
+}
+
+SANITIZE=0
+for arg in "$@"; do
+  case "$arg" in
+    --sanitize) SANITIZE=1 ;;
+    -h|--help) usage; exit 0 ;;
+    *) echo "scripts/test.sh: unknown argument '$arg'" >&2; usage >&2; exit 2 ;;
+  esac
+done
+
+stage() { printf '\n==== %s ====\n' "$*"; }
+
+if [[ $SANITIZE -eq 1 ]]; then
+  BUILD_DIR="build-sanitize"
+  BUILD_TYPE="RelWithDebInfo"
+  SANITIZERS="address;undefined"
+else
+  BUILD_DIR="build"
+  BUILD_TYPE="Release"
+  SANITIZERS=""
+fi
+JOBS="$(nproc 2>/dev/null || echo 2)"
+
+stage "1/4 dependencies (scripts/install-deps.sh)"
+bash "$ROOT/scripts/install-deps.sh"
+
+stage "2/4 configure ($BUILD_TYPE${SANITIZERS:+, sanitizers: $SANITIZERS}) into $BUILD_DIR/"
+cmake -S "$ROOT" -B "$ROOT/$BUILD_DIR" -G Ninja \
+  -DCMAKE_BUILD_TYPE="$BUILD_TYPE" \
+  -DSCULPT_BUILD_TESTS=ON \
+  -DSCULPT_WERROR=ON \
+  -DSCULPT_SANITIZE="$SANITIZERS" \
+  -DCMAKE_CXX_COMPILER_LAUNCHER=ccache
+
+stage "3/4 build with $JOBS jobs"
+cmake --build "$ROOT/$BUILD_DIR" --parallel "$JOBS"
+
+stage "4/4 tests (ctest)"
+if [[ $SANITIZE -eq 1 ]]; then
+  export ASAN_OPTIONS="${ASAN_OPTIONS:-detect_leaks=1:abort_on_error=1}"
+  export UBSAN_OPTIONS="${UBSAN_OPTIONS:-print_stacktrace=1:halt_on_error=1}"
+fi
+CTEST=(ctest --test-dir "$ROOT/$BUILD_DIR" --output-on-failure --parallel "$JOBS")
+if [[ -z "${DISPLAY:-}" ]] && command -v xvfb-run >/dev/null 2>&1; then
+  echo "no \$DISPLAY: running the tests under xvfb-run"
+  xvfb-run -a -s "-screen 0 1280x1024x24" "${CTEST[@]}"
+else
+  "${CTEST[@]}"
+fi
+
+stage "all tests passed ($BUILD_DIR/)"
