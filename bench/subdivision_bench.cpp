@@ -1,7 +1,7 @@
 // Refinement and stencil application on n x n x n blocks of unit hexahedra.
 #include <benchmark/benchmark.h>
 
-#include "mesh/cell_shapes.h"
+#include "mesh/standard_cell.h"
 #include "subdiv/mj_refiner.h"
 
 namespace {

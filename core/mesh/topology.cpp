@@ -98,8 +98,15 @@ int64_t Topology::findEdge(uint32_t a, uint32_t b) const {
   return -1;
 }
 
-std::vector<uint32_t> Topology::outwardLoop(uint32_t c, uint32_t faceSlot) const {
-  const uint32_t entry = cellFaces.offsets[c] + faceSlot;
+int Topology::faceSlot(uint32_t c, uint32_t f) const {
+  auto faces = cellFaces.row(c);
+  for (size_t i = 0; i < faces.size(); ++i)
+    if (faces[i] == f) return static_cast<int>(i);
+  return -1;
+}
+
+std::vector<uint32_t> Topology::outwardLoop(uint32_t c, uint32_t slot) const {
+  const uint32_t entry = cellFaces.offsets[c] + slot;
   auto loop = faceVertices.row(cellFaces.values[entry]);
   std::vector<uint32_t> out(loop.begin(), loop.end());
   if (cellFaceReversed[entry]) std::reverse(out.begin() + 1, out.end());

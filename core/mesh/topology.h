@@ -67,8 +67,11 @@ struct Topology {
 
   /// Edge id joining a and b, or -1 when there is none.
   int64_t findEdge(uint32_t a, uint32_t b) const;
-  /// Vertex loop of face f as cell c sees it from outside (reversed when needed).
-  std::vector<uint32_t> outwardLoop(uint32_t c, uint32_t faceSlot) const;
+  /// Slot of face f within cell c's face list, or -1 when f is not a face of c.
+  int faceSlot(uint32_t c, uint32_t f) const;
+  /// Vertex loop of the face in slot `slot` of cell c, as c sees it from outside (the stored
+  /// loop, reversed when c sees it the other way).
+  std::vector<uint32_t> outwardLoop(uint32_t c, uint32_t slot) const;
   /// True when cell c is a hexahedron: 6 quadrilateral faces, 8 vertices, 12 edges.
   bool isHexahedron(uint32_t c) const;
 };

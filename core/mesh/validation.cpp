@@ -208,8 +208,12 @@ std::vector<ValidationIssue> validate(const CellComplex& mesh) {
   checkBoundaryManifold(t, issues);
   checkTags(mesh, t, issues);
 
-  // Volumes, relative to the size of each cell so that tiny but valid cells pass.
+  // Volumes, relative to the size of each cell so that tiny but valid cells pass. Cells with a
+  // non-finite vertex were reported above and have no meaningful volume.
   for (uint32_t c = 0; c < mesh.numCells(); ++c) {
+    bool finite = true;
+    for (uint32_t v : t.cellVertices.row(c)) finite &= mesh.positions.row(v).allFinite();
+    if (!finite) continue;
     Eigen::Vector3d lo = Eigen::Vector3d::Constant(INFINITY), hi = -lo;
     for (uint32_t v : t.cellVertices.row(c)) {
       lo = lo.cwiseMin(mesh.positions.row(v).transpose());

@@ -21,7 +21,8 @@
 
 namespace sculpt {
 
-/// One refinement step: the child complex (tags set, positions left empty) and the stencils
+/// One refinement step: the child complex (tags set, positions sized but not computed: apply
+/// the stencils to the parent positions) and the stencils
 /// S (#child vertices by #parent vertices) with child positions = S parent positions.
 struct RefinementStep {
   CellComplex child;

@@ -24,9 +24,10 @@ class StencilTable {
   const std::vector<uint32_t>& indices() const { return indices_; }  ///< source point ids
   const std::vector<double>& weights() const { return weights_; }    ///< parallel to indices
 
-  /// dst (#rows by 3) = A src (#columns by 3). Multi-threaded over rows.
+  /// dst (#rows by 3) = A src (#columns by 3); dst is resized. Multi-threaded over rows.
   void apply(const Points& src, Points& dst) const;
-  /// dst (#columns by 3) = A^T src (#rows by 3), e.g. to project node forces onto control points.
+  /// dst (#columns by 3) = A^T src (#rows by 3), resized; projects node forces onto control
+  /// points.
   void applyTranspose(const Points& src, Points& dst) const;
   /// Sum of each row's weights (1 for an affine-invariant scheme).
   std::vector<double> rowSums() const;

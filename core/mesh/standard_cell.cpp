@@ -1,4 +1,4 @@
-#include "mesh/cell_shapes.h"
+#include "mesh/standard_cell.h"
 
 #include <array>
 

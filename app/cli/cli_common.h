@@ -1,0 +1,66 @@
+#pragma once
+// Shared pieces of the sculpt-cli subcommands: exit codes, one-line error reports, loading and
+// validating a control mesh, progress lines, size estimates.
+
+#include <cstdint>
+#include <filesystem>
+#include <functional>
+#include <optional>
+#include <string>
+#include <string_view>
+#include <vector>
+
+#include "mesh/cell_complex.h"
+#include "mesh/topology.h"
+#include "mesh/validation.h"
+#include "util/progress.h"
+
+namespace sculpt::cli {
+
+inline constexpr int kExitSuccess = 0;
+/// Bad input or usage: the message names the file, the element and the problem.
+inline constexpr int kExitBadInput = 2;
+
+/// Most levels any subcommand refines, and the most level-K cells it will build.
+inline constexpr int kMaxLevels = 6;
+inline constexpr uint64_t kMaxEstimatedCells = 50'000'000;
+
+/// Prints "error: <message>" to stderr as exactly one line; returns kExitBadInput.
+int printError(std::string_view message);
+
+/// Runs `body`, turning any exception into one error line and kExitBadInput. FileError messages
+/// already name their file; others are prefixed with `file` (read at the time of the failure)
+/// when it is not empty.
+int runGuarded(const std::string& file, const std::function<int()>& body);
+
+/// True when every vertex id in loops, creases and corners is below numVertices() (the
+/// precondition of buildTopology).
+bool vertexIdsInRange(const CellComplex& mesh);
+
+/// A control mesh that loaded and has no validation errors (warnings are kept).
+struct LoadedMesh {
+  CellComplex mesh;
+  std::vector<ValidationIssue> issues;
+};
+
+/// "<path>: <first error>" plus "(and N more; <moreHint>)" when there are more errors.
+std::string validationFailure(const std::string& path, const std::vector<ValidationIssue>& issues,
+                              const std::string& moreHint);
+
+/// Loads and validates `path`. On failure prints one error line and returns nullopt.
+std::optional<LoadedMesh> loadValidControlMesh(const std::string& path);
+
+/// Number of error-severity issues.
+size_t countErrors(const std::vector<ValidationIssue>& issues);
+
+/// Rough number of cells after `levels` MJ steps: each cell with k corners yields k cells, then
+/// each cell about 8. Saturates instead of overflowing.
+uint64_t estimateRefinedCells(const Topology& topology, int levels);
+
+/// Prints a line on stderr whenever the reported stage changes, with the elapsed time.
+ProgressReporter stderrProgress();
+
+/// The file's extension in lower case (".json"), empty when none.
+std::string lowerExtension(const std::filesystem::path& path);
+
+}  // namespace sculpt::cli

@@ -1,0 +1,18 @@
+#pragma once
+// The sculpt-cli subcommands. Each takes the arguments after its name and returns the exit code.
+
+#include <string>
+#include <vector>
+
+namespace sculpt::cli {
+
+int runInfoCommand(const std::vector<std::string>& args);
+int runSubdivideCommand(const std::vector<std::string>& args);
+int runBenchCommand(const std::vector<std::string>& args);
+
+/// One-paragraph usage of each subcommand (shown by `--help` and in the main usage).
+extern const char* const kInfoUsage;
+extern const char* const kSubdivideUsage;
+extern const char* const kBenchUsage;
+
+}  // namespace sculpt::cli

@@ -1,0 +1,42 @@
+#pragma once
+// Legacy ASCII VTK unstructured grids (version 4.2, readable by ParaView): hexahedra as
+// VTK_HEXAHEDRON, every other cell as VTK_POLYHEDRON with its outward face stream, and the cell
+// shape as an integer cell field.
+
+#include <array>
+#include <cstdint>
+#include <filesystem>
+#include <optional>
+#include <span>
+#include <string>
+
+#include "mesh/cell_complex.h"
+#include "mesh/topology.h"
+
+namespace sculpt {
+
+inline constexpr int kVtkHexahedron = 12;
+inline constexpr int kVtkPolyhedron = 42;
+
+/// A named per-vertex vector field, written as POINT_DATA VECTORS (e.g. a displacement).
+struct VtkPointVectors {
+  std::string name;                ///< field name (spaces are replaced by '_')
+  const Points* values = nullptr;  ///< #V by 3, one row per vertex of the complex
+};
+
+/// The vertices of hexahedral cell c in VTK order: 0-3 a face whose loop (by the right-hand rule)
+/// points into the cell, 4-7 the vertices joined to 0-3 by the remaining cell edges. Nullopt when
+/// the cell is not a hexahedron.
+std::optional<std::array<uint32_t, 8>> vtkHexahedronOrder(const Topology& topology, uint32_t c);
+
+/// The whole file as text. `complex` supplies positions, `topology` (built from it) the cells.
+/// Throws std::invalid_argument when a field has the wrong number of rows.
+std::string vtkUnstructuredGrid(const CellComplex& complex, const Topology& topology,
+                                std::span<const VtkPointVectors> pointVectors = {});
+
+/// Writes vtkUnstructuredGrid(...) atomically. Throws FileError.
+void writeVtk(const CellComplex& complex, const Topology& topology,
+              const std::filesystem::path& path,
+              std::span<const VtkPointVectors> pointVectors = {});
+
+}  // namespace sculpt
