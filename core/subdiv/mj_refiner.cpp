@@ -3,7 +3,7 @@
 #include <algorithm>
 #include <string>
 
-#include "util/parallel_for.h"
+#include "subdiv/stencil_builder.h"
 
 namespace sculpt {
 namespace {
@@ -11,7 +11,7 @@ namespace {
 // Accumulates one stencil row over old vertices with a dense scratch array (one per worker).
 class RowBuilder {
  public:
-  RowBuilder(const Topology& t) : t_(t), weights_(t.numVertices, 0.0), touched_(t.numVertices, 0) {}
+  explicit RowBuilder(const Topology& t) : t_(t), weights_(t.numVertices, 0.0), touched_(t.numVertices, 0) {}
 
   void add(uint32_t v, double w) {
     if (!touched_[v]) {
@@ -124,41 +124,16 @@ void facePointRow(const Topology& t, uint32_t f, RowBuilder& row) {
 
 StencilTable buildStencils(const Topology& t) {
   const uint32_t V = t.numVertices, E = t.numEdges(), F = t.numFaces(), C = t.numCells();
-  const uint32_t rows = V + E + F + C;
-  struct Block {
-    std::vector<uint32_t> sizes, indices;
-    std::vector<double> weights;
-  };
-  std::vector<Block> blocks(workerCount());
-  parallelChunks(rows, 2048, [&](uint32_t begin, uint32_t end, unsigned worker) {
-    Block& block = blocks[worker];
-    block.sizes.reserve(end - begin);
-    block.indices.reserve(size_t(end - begin) * 20);
-    block.weights.reserve(size_t(end - begin) * 20);
-    RowBuilder row(t);
-    for (uint32_t r = begin; r < end; ++r) {
+  return buildStencilTableInParallel(V + E + F + C, V, 20, [&t, V, E, F] {
+    return [&t, V, E, F, row = RowBuilder(t)](uint32_t r, std::vector<uint32_t>& indices,
+                                             std::vector<double>& weights) mutable {
       if (r < V) vertexPointRow(t, r, row);
       else if (r < V + E) edgePointRow(t, r - V, row);
       else if (r < V + E + F) facePointRow(t, r - V - E, row);
       else row.addCellCentroid(r - V - E - F, 1.0);
-      const size_t before = block.indices.size();
-      row.flush(block.indices, block.weights);
-      block.sizes.push_back(static_cast<uint32_t>(block.indices.size() - before));
-    }
+      row.flush(indices, weights);
+    };
   });
-  std::vector<uint32_t> offsets{0}, indices;
-  std::vector<double> weights;
-  size_t total = 0;
-  for (const Block& block : blocks) total += block.indices.size();
-  offsets.reserve(rows + 1);
-  indices.reserve(total);
-  weights.reserve(total);
-  for (const Block& block : blocks) {
-    for (uint32_t size : block.sizes) offsets.push_back(offsets.back() + size);
-    indices.insert(indices.end(), block.indices.begin(), block.indices.end());
-    weights.insert(weights.end(), block.weights.begin(), block.weights.end());
-  }
-  return StencilTable(V, std::move(offsets), std::move(indices), std::move(weights));
 }
 
 // Child cells (§4.1): one per (cell, corner), k quads around the vertex point and k around the

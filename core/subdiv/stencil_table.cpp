@@ -4,6 +4,7 @@
 #include <cassert>
 #include <numeric>
 
+#include "subdiv/stencil_builder.h"
 #include "util/parallel_for.h"
 
 namespace sculpt {
@@ -65,23 +66,12 @@ std::vector<double> StencilTable::rowSums() const {
 
 StencilTable StencilTable::compose(const StencilTable& outer, const StencilTable& inner) {
   assert(outer.numColumns() == inner.numRows());
-  const uint32_t rows = outer.numRows();
-  const unsigned workers = workerCount();
-  // Each worker fills its own block of rows with a dense accumulator over inner's columns.
-  struct Block {
-    std::vector<uint32_t> sizes, indices;
-    std::vector<double> weights;
-  };
-  std::vector<Block> blocks(workers);
-  parallelChunks(rows, 1024, [&](uint32_t begin, uint32_t end, unsigned worker) {
-    Block& block = blocks[worker];
-    block.sizes.reserve(end - begin);
-    block.indices.reserve(size_t(end - begin) * 32);
-    block.weights.reserve(size_t(end - begin) * 32);
-    std::vector<double> accumulator(inner.numColumns(), 0.0);
-    std::vector<uint8_t> touched(inner.numColumns(), 0);
-    std::vector<uint32_t> columns;
-    for (uint32_t r = begin; r < end; ++r) {
+  // Each worker merges rows with a dense accumulator over inner's columns.
+  auto makeRowWriter = [&] {
+    return [&, accumulator = std::vector<double>(inner.numColumns(), 0.0),
+            touched = std::vector<uint8_t>(inner.numColumns(), 0),
+            columns = std::vector<uint32_t>()](uint32_t r, std::vector<uint32_t>& indices,
+                                               std::vector<double>& weights) mutable {
       columns.clear();
       for (uint32_t k = outer.offsets_[r]; k < outer.offsets_[r + 1]; ++k) {
         const uint32_t mid = outer.indices_[k];
@@ -97,28 +87,14 @@ StencilTable StencilTable::compose(const StencilTable& outer, const StencilTable
       }
       std::sort(columns.begin(), columns.end());
       for (uint32_t col : columns) {
-        block.indices.push_back(col);
-        block.weights.push_back(accumulator[col]);
+        indices.push_back(col);
+        weights.push_back(accumulator[col]);
         accumulator[col] = 0.0;
         touched[col] = 0;
       }
-      block.sizes.push_back(static_cast<uint32_t>(columns.size()));
-    }
-  });
-  std::vector<uint32_t> offsets{0}, indices;
-  std::vector<double> weights;
-  size_t total = 0;
-  for (const Block& block : blocks) total += block.indices.size();
-  offsets.reserve(rows + 1);
-  indices.reserve(total);
-  weights.reserve(total);
-  for (const Block& block : blocks) {
-    for (uint32_t size : block.sizes) offsets.push_back(offsets.back() + size);
-    indices.insert(indices.end(), block.indices.begin(), block.indices.end());
-    weights.insert(weights.end(), block.weights.begin(), block.weights.end());
-  }
-  return StencilTable(inner.numColumns(), std::move(offsets), std::move(indices),
-                      std::move(weights));
+    };
+  };
+  return buildStencilTableInParallel(outer.numRows(), inner.numColumns(), 32, makeRowWriter);
 }
 
 StencilChain::StencilChain(std::vector<StencilTable> levels) : levels_(std::move(levels)) {}

@@ -30,6 +30,10 @@
 namespace sculpt {
 namespace {
 
+using test::jittered;
+using test::NamedMesh;
+using test::taggedMixed;
+
 namespace Far = OpenSubdiv::Far;
 namespace Sdc = OpenSubdiv::Sdc;
 
@@ -249,30 +253,6 @@ CellComplex boxCreasedGrid(int nx, int ny, int nz) {
   test::jitter(m, 0.05, 31);
   return m;
 }
-
-CellComplex jittered(CellComplex m, double amplitude, uint64_t seed) {
-  test::jitter(m, amplitude, seed);
-  return m;
-}
-
-/// The mixed mesh with a crease chain ending in darts, a crease vertex, and two corners.
-CellComplex taggedMixed() {
-  CellComplex m = jittered(test::mixedMesh(), 0.05, 21);
-  auto g = [](uint32_t i, uint32_t j, uint32_t k) { return i + 4 * (j + 2 * k); };
-  m.creases = {{g(0, 0, 0), g(1, 0, 0)},
-               {g(1, 0, 0), g(2, 0, 0)},
-               {g(2, 0, 0), g(3, 0, 0)},
-               {g(3, 0, 0), g(3, 0, 1)},
-               {g(3, 1, 0), g(3, 1, 1)}};
-  m.corners = {g(0, 1, 0), g(3, 1, 1)};
-  return m;
-}
-
-struct NamedMesh {
-  std::string name;
-  std::function<CellComplex()> build;
-};
-void PrintTo(const NamedMesh& m, std::ostream* os) { *os << m.name; }
 
 class OwnMeshes : public ::testing::TestWithParam<NamedMesh> {};
 

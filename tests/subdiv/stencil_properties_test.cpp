@@ -18,31 +18,9 @@
 namespace sculpt {
 namespace {
 
-struct NamedMesh {
-  std::string name;
-  std::function<CellComplex()> build;
-};
-void PrintTo(const NamedMesh& m, std::ostream* os) { *os << m.name; }
-
-CellComplex jittered(CellComplex m, double amplitude, uint64_t seed) {
-  test::jitter(m, amplitude, seed);
-  return m;
-}
-
-/// The mixed mesh (2 hexes, 2 prisms, 2 pyramids) with creases along the bottom front edge
-/// chain y = 0, z = 0 from x = 0 to x = 3 (a crease chain whose ends are smooth: darts), and the
-/// box edge x = 3, y = 0 (vertical), plus two corners.
-CellComplex taggedMixed() {
-  CellComplex m = jittered(test::mixedMesh(), 0.05, 21);
-  auto g = [](uint32_t i, uint32_t j, uint32_t k) { return i + 4 * (j + 2 * k); };
-  m.creases = {{g(0, 0, 0), g(1, 0, 0)},
-               {g(1, 0, 0), g(2, 0, 0)},
-               {g(2, 0, 0), g(3, 0, 0)},
-               {g(3, 0, 0), g(3, 0, 1)},
-               {g(3, 1, 0), g(3, 1, 1)}};
-  m.corners = {g(0, 1, 0), g(3, 1, 1)};
-  return m;
-}
+using test::jittered;
+using test::NamedMesh;
+using test::taggedMixed;
 
 const NamedMesh kMeshes[] = {
     {"UnitCube", test::unitCube},

@@ -16,16 +16,8 @@
 namespace sculpt {
 namespace {
 
-struct NamedMesh {
-  std::string name;
-  std::function<CellComplex()> build;
-};
-void PrintTo(const NamedMesh& m, std::ostream* os) { *os << m.name; }
-
-CellComplex jittered(CellComplex m, double amplitude, uint64_t seed) {
-  test::jitter(m, amplitude, seed);
-  return m;
-}
+using test::jittered;
+using test::NamedMesh;
 
 const NamedMesh kMeshes[] = {
     {"UnitCube", test::unitCube},

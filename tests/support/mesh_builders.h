@@ -10,7 +10,9 @@
 #include <array>
 #include <cmath>
 #include <cstdint>
+#include <functional>
 #include <map>
+#include <ostream>
 #include <random>
 #include <set>
 #include <sstream>
@@ -259,6 +261,34 @@ inline void jitter(CellComplex& m, double amplitude, uint64_t seed) {
   std::uniform_real_distribution<double> uni(-amplitude, amplitude);
   for (Eigen::Index i = 0; i < m.positions.rows(); ++i)
     for (Eigen::Index d = 0; d < 3; ++d) m.positions(i, d) += uni(rng);
+}
+
+/// A copy of m with every coordinate moved by a uniform random amount in [-amplitude, amplitude].
+inline CellComplex jittered(CellComplex m, double amplitude, uint64_t seed) {
+  jitter(m, amplitude, seed);
+  return m;
+}
+
+/// A mesh builder with a name, for value-parameterised tests.
+struct NamedMesh {
+  std::string name;
+  std::function<CellComplex()> build;
+};
+inline void PrintTo(const NamedMesh& m, std::ostream* os) { *os << m.name; }
+
+/// The mixed mesh (2 hexes, 2 prisms, 2 pyramids) with creases along the bottom front edge
+/// chain y = 0, z = 0 from x = 0 to x = 3 (a crease chain whose ends are smooth: darts), and the
+/// box edge x = 3, y = 0 (vertical), plus two corners.
+inline CellComplex taggedMixed() {
+  CellComplex m = jittered(mixedMesh(), 0.05, 21);
+  auto g = [](uint32_t i, uint32_t j, uint32_t k) { return i + 4 * (j + 2 * k); };
+  m.creases = {{g(0, 0, 0), g(1, 0, 0)},
+               {g(1, 0, 0), g(2, 0, 0)},
+               {g(2, 0, 0), g(3, 0, 0)},
+               {g(3, 0, 0), g(3, 0, 1)},
+               {g(3, 1, 0), g(3, 1, 1)}};
+  m.corners = {g(0, 1, 0), g(3, 1, 1)};
+  return m;
 }
 
 /// Independent check that every cell is closed and consistently oriented (each directed edge
