@@ -4,6 +4,7 @@
 #   scripts/test.sh              Release build in build/, then ctest
 #   scripts/test.sh --sanitize   RelWithDebInfo build in build-sanitize/ with
 #                                AddressSanitizer + UndefinedBehaviorSanitizer, then ctest
+#   scripts/test.sh --tsan       RelWithDebInfo build in build-tsan/ with ThreadSanitizer
 #
 # Warnings in our own code are errors here (-DSCULPT_WERROR=ON). Tests that open windows run under
 # xvfb-run when there is no $DISPLAY. The exit code is that of the first failing stage.
@@ -13,13 +14,14 @@ ROOT="$(cd "$(dirname "${BASH_SOURCE[0]}")/.." && pwd)"
 cd "$ROOT"
 
 usage() {
-  sed -n '2,9p' "${BASH_SOURCE[0]}" | sed 's/^# \{0,1\}//'
+  sed -n '2,10p' "${BASH_SOURCE[0]}" | sed 's/^# \{0,1\}//'
 }
 
 SANITIZE=0
 for arg in "$@"; do
   case "$arg" in
     --sanitize) SANITIZE=1 ;;
+    --tsan) SANITIZE=2 ;;
     -h|--help) usage; exit 0 ;;
     *) echo "scripts/test.sh: unknown argument '$arg'" >&2; usage >&2; exit 2 ;;
   esac
@@ -31,6 +33,10 @@ if [[ $SANITIZE -eq 1 ]]; then
   BUILD_DIR="build-sanitize"
   BUILD_TYPE="RelWithDebInfo"
   SANITIZERS="address;undefined"
+elif [[ $SANITIZE -eq 2 ]]; then
+  BUILD_DIR="build-tsan"
+  BUILD_TYPE="RelWithDebInfo"
+  SANITIZERS="thread"
 else
   BUILD_DIR="build"
   BUILD_TYPE="Release"
@@ -53,6 +59,9 @@ stage "3/4 build with $JOBS jobs"
 cmake --build "$ROOT/$BUILD_DIR" --parallel "$JOBS"
 
 stage "4/4 tests (ctest)"
+if [[ $SANITIZE -eq 2 ]]; then
+  export TSAN_OPTIONS="${TSAN_OPTIONS:-halt_on_error=1}"
+fi
 if [[ $SANITIZE -eq 1 ]]; then
   export ASAN_OPTIONS="${ASAN_OPTIONS:-detect_leaks=1:abort_on_error=1}"
   export UBSAN_OPTIONS="${UBSAN_OPTIONS:-print_stacktrace=1:halt_on_error=1}"
