@@ -7,6 +7,7 @@
 #include "io/atomic_file.h"
 #include "io/number_text.h"
 #include "mesh/cell_shape.h"
+#include "mesh/hexahedron.h"
 
 namespace sculpt {
 namespace {
@@ -35,25 +36,11 @@ std::optional<std::array<uint32_t, 8>> vtkHexahedronOrder(const Topology& topolo
   // The outward loop of the first face, reversed, is a base whose normal points into the cell.
   const std::vector<uint32_t> loop = topology.outwardLoop(c, 0);
   if (loop.size() != 4) return std::nullopt;
-  std::array<uint32_t, 8> order{loop[0], loop[3], loop[2], loop[1], 0, 0, 0, 0};
-  const auto inBase = [&](uint32_t v) {
-    return std::find(order.begin(), order.begin() + 4, v) != order.begin() + 4;
-  };
-  // Each base vertex has exactly one cell edge leaving the base; its far end is the top vertex.
-  for (int i = 0; i < 4; ++i) {
-    int found = 0;
-    for (uint32_t e : topology.cellEdges.row(c)) {
-      const auto& ends = topology.edgeVertices[e];
-      const uint32_t b = order[static_cast<size_t>(i)];
-      if (ends[0] != b && ends[1] != b) continue;
-      const uint32_t other = ends[0] == b ? ends[1] : ends[0];
-      if (inBase(other)) continue;
-      order[static_cast<size_t>(i + 4)] = other;
-      ++found;
-    }
-    if (found != 1) return std::nullopt;
-  }
-  return order;
+  const std::array<uint32_t, 4> base{loop[0], loop[3], loop[2], loop[1]};
+  const auto top = hexOppositeFace(topology, c, base);
+  if (!top) return std::nullopt;
+  return std::array<uint32_t, 8>{base[0],   base[1],   base[2],   base[3],
+                                 (*top)[0], (*top)[1], (*top)[2], (*top)[3]};
 }
 
 std::string vtkUnstructuredGrid(const CellComplex& complex, const Topology& topology,

@@ -2,6 +2,8 @@
 
 #include <algorithm>
 
+#include "mesh/hexahedron.h"
+
 namespace sculpt {
 
 bool isRegularVertex(const Topology& t, uint32_t v) {
@@ -54,24 +56,17 @@ struct PlacedCell {
 };
 
 // Places the four vertices of hexahedron `cell` opposite a known face: each known vertex's
-// cell neighbour off the face sits one step along `direction`.
+// cell neighbour off the face sits one step along `axis`.
 bool placeOppositeFace(const Topology& t, PlacedCell& placed,
                        const std::array<std::pair<uint32_t, Index3>, 4>& face, int axis, int step) {
-  for (const auto& [x, index] : face) {
-    int found = 0;
-    for (uint32_t e : t.cellEdges.row(placed.cell)) {
-      const auto& ev = t.edgeVertices[e];
-      if (ev[0] != x && ev[1] != x) continue;
-      const uint32_t y = ev[0] == x ? ev[1] : ev[0];
-      bool onFace = false;
-      for (const auto& q : face) onFace |= q.first == y;
-      if (onFace) continue;
-      Index3 target = index;
-      target[size_t(axis)] += step;
-      placed.corners[size_t(placed.numCorners++)] = {y, target};
-      ++found;
-    }
-    if (found != 1) return false;
+  std::array<uint32_t, 4> ids;
+  for (size_t i = 0; i < 4; ++i) ids[i] = face[i].first;
+  const auto opposite = hexOppositeFace(t, placed.cell, ids);
+  if (!opposite) return false;
+  for (size_t i = 0; i < 4; ++i) {
+    Index3 target = face[i].second;
+    target[size_t(axis)] += step;
+    placed.corners[size_t(placed.numCorners++)] = {(*opposite)[i], target};
   }
   return true;
 }
