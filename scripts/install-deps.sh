@@ -30,6 +30,8 @@ PACKAGES=(
   # Tests and benchmarks.
   libgtest-dev
   libbenchmark-dev
+  calculix-ccx       # ccx: independent FEM reference for the FEM tests (C3D8, C3D20R)
+  tetgen             # irregular tetrahedral meshes for the Phong deformation tests
   xvfb               # xvfb-run: window tests without a display
   xauth              # needed by xvfb-run
 )

@@ -33,11 +33,21 @@ CliArgs CliArgs::parse(std::span<const std::string> args, std::span<const Option
     if (!spec->takesValue) {
       if (equals != std::string::npos) throw UsageError("option '--" + name + "' takes no value");
       result.options_.emplace_back(name, "");
-    } else if (equals != std::string::npos) {
-      result.options_.emplace_back(name, arg.substr(equals + 1));
     } else {
-      if (i + 1 >= args.size()) throw UsageError("option '--" + name + "' needs a value");
-      result.options_.emplace_back(name, args[++i]);
+      std::string value;
+      if (equals != std::string::npos) {
+        value = arg.substr(equals + 1);
+      } else {
+        if (i + 1 >= args.size()) throw UsageError("option '--" + name + "' needs a value");
+        value = args[++i];
+      }
+      for (int extra = 0; extra < spec->extraValues; ++extra) {
+        if (i + 1 >= args.size())
+          throw UsageError("option '--" + name + "' needs " + std::to_string(spec->extraValues + 1) +
+                           " values");
+        value += ' ' + args[++i];
+      }
+      result.options_.emplace_back(name, std::move(value));
     }
   }
   return result;

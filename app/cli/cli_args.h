@@ -22,6 +22,9 @@ class UsageError : public std::runtime_error {
 struct OptionSpec {
   std::string_view name;
   bool takesValue = false;
+  /// Further arguments the option consumes after its value (`--force BOX FX,FY,FZ` has one);
+  /// they are appended to the value, separated by single spaces.
+  int extraValues = 0;
 };
 
 class CliArgs {

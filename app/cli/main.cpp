@@ -17,6 +17,7 @@ void printUsage(std::ostream& out) {
          "commands:\n"
       << sculpt::cli::kInfoUsage << '\n'
       << sculpt::cli::kSubdivideUsage << '\n'
+      << sculpt::cli::kStaticUsage << '\n'
       << sculpt::cli::kBenchUsage << '\n'
       << "Run 'sculpt-cli <command> --help' for one command. Exit code 0 on success, 2 on bad\n"
          "input or usage (with one line on stderr naming the file and the problem).\n";
@@ -37,6 +38,7 @@ int dispatch(const std::vector<std::string>& args) {
   if (command == "info") return runInfoCommand(rest);
   if (command == "subdivide") return runSubdivideCommand(rest);
   if (command == "bench") return runBenchCommand(rest);
+  if (command == "static") return runStaticCommand(rest);
   return printError("unknown command '" + command + "' (run 'sculpt-cli --help')");
 }
 

@@ -1,0 +1,50 @@
+#pragma once
+// Co-rotated linear elasticity on the elements of a FemMesh (local-frame-fem.md).
+//
+// Per element a rotation R_e (polar decomposition of F at the element centre). With the
+// rotations held fixed the energy
+//     E(x) = sum_q V_q (mu eps:eps + lambda/2 tr(eps)^2),   eps = sym(R_e^T F_q) - I
+// is quadratic in the node positions x; its gradient is R_e K_e (R_e^T x_e - X_e) summed over
+// elements (the elastic force with a minus sign) and its Hessian is R_e K_e R_e^T, the usual
+// co-rotational stiffness that ignores the derivative of R_e. Tricubic elements are evaluated
+// matrix-free with sum factorisation over the 4x4x4 tensor structure; linear elements use their
+// stored rest shape-function gradients. Element loops run on all worker threads.
+
+#include <Eigen/Core>
+#include <vector>
+
+#include "fem/fem_mesh.h"
+
+namespace sculpt {
+
+class ElasticKernel {
+ public:
+  explicit ElasticKernel(const FemMesh& mesh);
+
+  /// R_e from the current node positions (#nodes by 3).
+  void updateRotations(const Points& nodes);
+  /// R_e = I for every element: plain small-strain linear elasticity.
+  void resetRotations();
+  const std::vector<Eigen::Matrix3d>& rotations() const { return rotations_; }
+
+  /// E(nodes) with the current rotations.
+  double energy(const Points& nodes) const;
+  /// gradient += dE/dx at `nodes` (= minus the elastic node forces).
+  void addGradient(const Points& nodes, Points& gradient) const;
+  /// result += H dx, H the Hessian of E (rotations fixed).
+  void addHessianProduct(const Points& dx, Points& result) const;
+
+  const FemMesh& mesh() const { return mesh_; }
+
+ private:
+  enum class Mode { Gradient, HessianProduct };
+  // Runs the element kernels; accumulates into `out` when non-null and returns the energy when
+  // `withEnergy` (gradient mode only).
+  double run(const Points& x, Mode mode, Points* out, bool withEnergy) const;
+
+  const FemMesh& mesh_;
+  std::vector<Eigen::Matrix3d> rotations_;
+  mutable std::vector<Points> workerBuffers_;
+};
+
+}  // namespace sculpt

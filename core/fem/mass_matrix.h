@@ -1,0 +1,25 @@
+#pragma once
+// Consistent scalar mass and damping matrices (paper section 3.2.1): M = integral mu N^T N dV on
+// the nodes, and their reduction to the control points M~ = A^T M A (eq. 18). The x, y and z
+// blocks share one scalar matrix.
+
+#include <Eigen/SparseCore>
+
+#include "fem/fem_mesh.h"
+
+namespace sculpt {
+
+using SparseMatrix = Eigen::SparseMatrix<double>;  // column-major, symmetric use
+
+enum class MassField { Density, Damping };
+
+/// Node-level integral of `field` N^T N over every element (#nodes square).
+SparseMatrix assembleNodeMatrix(const FemMesh& mesh, MassField field);
+
+/// A as a sparse matrix (#rows by #columns of the stencil table).
+SparseMatrix stencilMatrix(const StencilTable& stencils);
+
+/// A^T M A.
+SparseMatrix reduceToControlPoints(const SparseMatrix& A, const SparseMatrix& nodeMatrix);
+
+}  // namespace sculpt

@@ -1,0 +1,52 @@
+#include "sim/conjugate_gradient.h"
+
+#include <cmath>
+
+namespace sculpt {
+
+CgResult conjugateGradient(const LinearOperator& A, const LinearOperator& preconditioner,
+                           const Eigen::VectorXd& b, Eigen::VectorXd& x, double tolerance,
+                           int maxIterations) {
+  CgResult result;
+  const double bNorm = b.norm();
+  if (!std::isfinite(bNorm)) return result;
+  if (bNorm == 0.0) {
+    x.setZero();
+    result.converged = true;
+    return result;
+  }
+  if (x.size() != b.size() || !x.allFinite()) x.setZero(b.size());
+  Eigen::VectorXd Ax(b.size()), r, z(b.size()), p, Ap(b.size());
+  A(x, Ax);
+  r = b - Ax;
+  result.relativeResidual = r.norm() / bNorm;
+  if (result.relativeResidual <= tolerance) {
+    result.converged = true;
+    return result;
+  }
+  preconditioner(r, z);
+  p = z;
+  double rz = r.dot(z);
+  for (int it = 0; it < maxIterations; ++it) {
+    A(p, Ap);
+    const double pAp = p.dot(Ap);
+    if (!(pAp > 0) || !std::isfinite(pAp)) break;
+    const double alpha = rz / pAp;
+    x += alpha * p;
+    r -= alpha * Ap;
+    result.iterations = it + 1;
+    result.relativeResidual = r.norm() / bNorm;
+    if (result.relativeResidual <= tolerance) {
+      result.converged = true;
+      break;
+    }
+    preconditioner(r, z);
+    const double rzNext = r.dot(z);
+    if (!std::isfinite(rzNext)) break;
+    p = z + (rzNext / rz) * p;
+    rz = rzNext;
+  }
+  return result;
+}
+
+}  // namespace sculpt

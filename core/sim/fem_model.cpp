@@ -1,0 +1,100 @@
+#include "sim/fem_model.h"
+
+#include <cmath>
+
+#include "mesh/topology.h"
+
+namespace sculpt {
+
+std::optional<FemModel> FemModel::create(const CellComplex& control, const FemSetup& setup,
+                                         std::string* error, ProgressReporter* progress) {
+  auto fail = [&](std::string message) -> std::optional<FemModel> {
+    if (error) *error = std::move(message);
+    return std::nullopt;
+  };
+  if (!setup.trilinear && (setup.level < 1 || setup.level > 6))
+    return fail("simulation level " + std::to_string(setup.level) +
+                " is out of range (1..6; every cell must be subdivided at least once)");
+  FemModel model;
+  model.setup_ = setup;
+  if (setup.trilinear) {
+    Subdivision s;
+    s.levels.push_back(control);
+    s.topologies.push_back(buildTopology(control));
+    s.stencils = StencilTable::identity(control.numVertices());
+    model.subdivision_ = std::make_unique<Subdivision>(std::move(s));
+  } else {
+    auto s = subdivide(control, setup.level, progress);
+    if (!s) return std::nullopt;  // cancelled
+    model.subdivision_ = std::make_unique<Subdivision>(std::move(*s));
+  }
+  FemMeshOptions options;
+  options.allowTricubic = !setup.trilinear;
+  options.material = setup.material;
+  std::string problem;
+  auto mesh = buildFemMesh(model.subdivision_->finest(), model.subdivision_->finestTopology(),
+                           model.subdivision_->stencils, options, &problem);
+  if (!mesh) return fail(problem);
+  model.mesh_ = std::make_unique<FemMesh>(std::move(*mesh));
+  model.elastic_ = std::make_unique<ElasticKernel>(*model.mesh_);
+  model.A_ = sculpt::stencilMatrix(model.mesh_->nodeStencils);
+  if (progress && !progress->report(1.0, "elements")) return std::nullopt;
+  return model;
+}
+
+void FemModel::nodesFromControl(const Points& control, Points& nodes) const {
+  mesh_->nodeStencils.apply(control, nodes);
+}
+
+void FemModel::addToControl(const Points& nodeVectors, Points& control) const {
+  Points projected;
+  mesh_->nodeStencils.applyTranspose(nodeVectors, projected);
+  control += projected;
+}
+
+void FemModel::refreshMatrices() const {
+  if (!matricesStale_) return;
+  reducedMass_ = reduceToControlPoints(A_, assembleNodeMatrix(*mesh_, MassField::Density));
+  reducedDamping_ = reduceToControlPoints(A_, assembleNodeMatrix(*mesh_, MassField::Damping));
+  matricesStale_ = false;
+}
+
+const SparseMatrix& FemModel::reducedMass() const {
+  refreshMatrices();
+  return reducedMass_;
+}
+
+const SparseMatrix& FemModel::reducedDamping() const {
+  refreshMatrices();
+  return reducedDamping_;
+}
+
+double FemModel::totalMass() const {
+  double m = 0;
+  for (uint32_t q = 0; q < mesh_->numGaussPoints(); ++q)
+    m += mesh_->gaussMaterial[q].density * mesh_->gaussVolume[q];
+  return m;
+}
+
+long FemModel::paintMaterial(const Eigen::Vector3d& centre, double radius,
+                             const Material& material, std::string* error) {
+  if (const std::string problem = materialProblem(material); !problem.empty()) {
+    if (error) *error = "invalid material: " + problem;
+    return -1;
+  }
+  long changed = 0;
+  const double r2 = std::isinf(radius) ? radius : radius * radius;
+  for (uint32_t q = 0; q < mesh_->numGaussPoints(); ++q) {
+    if ((mesh_->gaussRestPosition[q] - centre).squaredNorm() > r2) continue;
+    mesh_->gaussMaterial[q] = material;
+    mesh_->gaussLame[q] = lameParameters(material);
+    ++changed;
+  }
+  if (changed > 0) {
+    matricesStale_ = true;
+    ++materialVersion_;
+  }
+  return changed;
+}
+
+}  // namespace sculpt

@@ -1,0 +1,435 @@
+#include "sim/simulator.h"
+
+#include <algorithm>
+#include <cmath>
+#include <sstream>
+
+#include "sim/conjugate_gradient.h"
+#include "sim/standard_forms.h"
+#include "sim/system_preconditioner.h"
+
+namespace sculpt {
+namespace {
+
+Eigen::VectorXd gather(const Points& p, const std::vector<int>& dofs) {
+  Eigen::VectorXd v(Eigen::Index(dofs.size()));
+  const double* data = p.data();
+  for (size_t k = 0; k < dofs.size(); ++k) v[Eigen::Index(k)] = data[dofs[k]];
+  return v;
+}
+
+void scatter(const Eigen::VectorXd& v, const std::vector<int>& dofs, Points& p) {
+  double* data = p.data();
+  for (size_t k = 0; k < dofs.size(); ++k) data[dofs[k]] = v[Eigen::Index(k)];
+}
+
+std::string formatNumber(double v) {
+  std::ostringstream s;
+  s.precision(3);
+  s << v;
+  return s.str();
+}
+
+}  // namespace
+
+const char* integratorName(Integrator integrator) {
+  return integrator == Integrator::Paper ? "paper" : "implicit";
+}
+
+std::optional<Integrator> parseIntegrator(const std::string& name) {
+  if (name == "paper") return Integrator::Paper;
+  if (name == "implicit") return Integrator::Implicit;
+  return std::nullopt;
+}
+
+Simulator::Simulator(FemModel& model, SimulationSettings settings)
+    : model_(model),
+      settings_(settings),
+      elastic_(std::make_unique<ElasticForm>(model, settings.corotated)),
+      preconditioner_(std::make_unique<SystemPreconditioner>()) {
+  const Eigen::Index n = model.numControlPoints();
+  position_ = model.restControl();
+  velocity_.setZero(n, 3);
+  fixed_.assign(size_t(n), 0);
+  refreshFreeDofs();
+  // Energies below this are noise for the explosion test: a millionth of the energy of the
+  // whole mass moving by its own size in a second.
+  const Eigen::Vector3d extent =
+      (position_.colwise().maxCoeff() - position_.colwise().minCoeff()).transpose();
+  energyFloor_ = 1e-6 * std::max(model.totalMass(), 1e-12) * std::max(extent.squaredNorm(), 1e-12);
+  energyBudget_ = 0;
+}
+
+Simulator::~Simulator() = default;
+
+std::string Simulator::setSettings(const SimulationSettings& s) {
+  if (!(s.timeStep > 0) || !std::isfinite(s.timeStep))
+    return "time step " + formatNumber(s.timeStep) + " s must be positive and finite";
+  if (!(s.paperTolerance > 0) || !(s.implicitTolerance > 0))
+    return "solver tolerances must be positive";
+  if (s.maxIterations < 1 || s.maxHalvings < 0 || s.maxHalvings > 30)
+    return "iteration limits out of range";
+  if (s.corotated != settings_.corotated)
+    elastic_ = std::make_unique<ElasticForm>(model_, s.corotated);
+  settings_ = s;
+  return {};
+}
+
+void Simulator::setState(const Points& positions, const Points& velocities) {
+  position_ = positions;
+  velocity_ = velocities;
+  previousStep_ = 0;
+  lastIncrement_.resize(0, 3);
+  energyBudget_ = kineticEnergy() + elasticEnergy();
+}
+
+void Simulator::setFixed(uint32_t controlPoint, bool fixed) {
+  if (controlPoint >= fixed_.size()) return;
+  fixed_[controlPoint] = fixed ? 1 : 0;
+  if (fixed) velocity_.row(controlPoint).setZero();
+  refreshFreeDofs();
+}
+
+uint32_t Simulator::fixInBox(const Eigen::AlignedBox3d& box) {
+  uint32_t count = 0;
+  const Points& rest = model_.restControl();
+  for (Eigen::Index i = 0; i < rest.rows(); ++i) {
+    if (!box.contains(rest.row(i).transpose())) continue;
+    fixed_[size_t(i)] = 1;
+    velocity_.row(i).setZero();
+    ++count;
+  }
+  refreshFreeDofs();
+  return count;
+}
+
+void Simulator::refreshFreeDofs() {
+  freeDofs_.clear();
+  for (size_t i = 0; i < fixed_.size(); ++i)
+    if (!fixed_[i])
+      for (int c = 0; c < 3; ++c) freeDofs_.push_back(int(3 * i) + c);
+  lastIncrement_.resize(0, 3);
+}
+
+Form* Simulator::addLoad(std::unique_ptr<Form> load) {
+  loads_.push_back(std::move(load));
+  return loads_.back().get();
+}
+
+void Simulator::removeLoad(const Form* load) {
+  std::erase_if(loads_, [&](const std::unique_ptr<Form>& f) { return f.get() == load; });
+}
+
+void Simulator::zeroFixed(Points& x) const {
+  for (size_t i = 0; i < fixed_.size(); ++i)
+    if (fixed_[i]) x.row(Eigen::Index(i)).setZero();
+}
+
+void Simulator::prepareForms(const Points& x, bool withInertia) {
+  model_.nodesFromControl(x, scratchNodes_);
+  const FormState state{x, scratchNodes_};
+  elastic_->prepare(state);
+  for (auto& load : loads_) load->prepare(state);
+  if (withInertia) {
+    inertia_->prepare(state);
+    damping_->prepare(state);
+  }
+}
+
+Points Simulator::totalGradient(const Points& x, bool withInertia) {
+  model_.nodesFromControl(x, scratchNodes_);
+  const FormState state{x, scratchNodes_};
+  FormGradient g;
+  g.setZero(x.rows(), scratchNodes_.rows());
+  elastic_->addGradient(state, g);
+  for (auto& load : loads_) load->addGradient(state, g);
+  if (withInertia) {
+    inertia_->addGradient(state, g);
+    damping_->addGradient(state, g);
+  }
+  model_.addToControl(g.nodes, g.control);
+  zeroFixed(g.control);
+  return g.control;
+}
+
+Points Simulator::hessianProduct(const Points& dx, bool withInertia) {
+  model_.nodesFromControl(dx, scratchNodeDirection_);
+  const FormState state{position_, scratchNodes_};
+  const FormState direction{dx, scratchNodeDirection_};
+  FormGradient r;
+  r.setZero(dx.rows(), scratchNodeDirection_.rows());
+  elastic_->addHessianProduct(state, direction, r);
+  for (auto& load : loads_) load->addHessianProduct(state, direction, r);
+  if (withInertia) {
+    inertia_->addHessianProduct(state, direction, r);
+    damping_->addHessianProduct(state, direction, r);
+  }
+  model_.addToControl(r.nodes, r.control);
+  zeroFixed(r.control);
+  return r.control;
+}
+
+double Simulator::systemLoadEnergy(const Points& x) {
+  model_.nodesFromControl(x, scratchNodes_);
+  const FormState state{x, scratchNodes_};
+  double e = 0;
+  for (auto& load : loads_) e += load->energy(state);
+  return e;
+}
+
+double Simulator::kineticEnergy() const {
+  const Points Mv = applyScalarMatrix(model_.reducedMass(), velocity_);
+  return 0.5 * velocity_.cwiseProduct(Mv).sum();
+}
+
+double Simulator::elasticEnergy() {
+  model_.nodesFromControl(position_, scratchNodes_);
+  const FormState state{position_, scratchNodes_};
+  elastic_->prepare(state);
+  return elastic_->energy(state);
+}
+
+double Simulator::loadEnergy() {
+  model_.nodesFromControl(position_, scratchNodes_);
+  const FormState state{position_, scratchNodes_};
+  for (auto& load : loads_) load->prepare(state);
+  return systemLoadEnergy(position_);
+}
+
+Simulator::Attempt Simulator::checkState(double loadEnergyBefore) {
+  Attempt a;
+  if (!position_.allFinite() || !velocity_.allFinite()) {
+    a.ok = false;
+    a.failure = "non-finite positions";
+    return a;
+  }
+  // Kinetic energy cannot exceed what the state had plus the work the loads did.
+  const double loadEnergyAfter = systemLoadEnergy(position_);
+  const double work = std::abs(loadEnergyBefore - loadEnergyAfter);
+  energyBudget_ += std::isfinite(work) ? work : 0.0;
+  const double kinetic = kineticEnergy();
+  if (!std::isfinite(kinetic) || kinetic > 10.0 * energyBudget_ + energyFloor_) {
+    a.ok = false;
+    a.failure = "kinetic energy " + formatNumber(kinetic) + " J exceeds the energy supplied (" +
+                formatNumber(energyBudget_) + " J)";
+  }
+  return a;
+}
+
+Simulator::Attempt Simulator::implicitSubstep(double h) {
+  Attempt a;
+  inertia_ = std::make_unique<InertiaForm>(model_, h);
+  damping_ = std::make_unique<DampingForm>(model_, h);
+  const Points start = position_;
+  Points predicted = position_ + h * velocity_;
+  for (size_t i = 0; i < fixed_.size(); ++i)
+    if (fixed_[i]) predicted.row(Eigen::Index(i)) = start.row(Eigen::Index(i));
+  inertia_->setPrediction(predicted);
+  damping_->setStart(start);
+  const double loadBefore = systemLoadEnergy(start);
+
+  position_ = predicted;
+  prepareForms(position_, true);
+  const Points g = totalGradient(position_, true);
+  const Eigen::VectorXd b = -gather(g, freeDofs_);
+  preconditioner_->update(model_, 1.0 / (h * h), 1.0 / h, 1.0, freeDofs_);
+  Eigen::VectorXd x = Eigen::VectorXd::Zero(b.size());
+  Points direction = Points::Zero(position_.rows(), 3);
+  const LinearOperator op = [&](const Eigen::VectorXd& in, Eigen::VectorXd& out) {
+    direction.setZero();
+    scatter(in, freeDofs_, direction);
+    out = gather(hessianProduct(direction, true), freeDofs_);
+  };
+  const LinearOperator pre = [&](const Eigen::VectorXd& r, Eigen::VectorXd& z) {
+    preconditioner_->apply(r, z);
+  };
+  const CgResult cg =
+      conjugateGradient(op, pre, b, x, settings_.implicitTolerance, settings_.maxIterations);
+  a.iterations = cg.iterations;
+  a.residual = cg.relativeResidual;
+  Points dx = Points::Zero(position_.rows(), 3);
+  scatter(x, freeDofs_, dx);
+  position_ += dx;
+  velocity_ = (position_ - start) / h;
+  Attempt check = checkState(loadBefore);
+  check.iterations = a.iterations;
+  check.residual = a.residual;
+  return check;
+}
+
+Simulator::Attempt Simulator::paperSubstep(double h) {
+  Attempt a;
+  if (previousStep_ != h || previous_.rows() != position_.rows()) {
+    previous_ = position_ - h * velocity_;
+    previousStep_ = h;
+    lastIncrement_.resize(0, 3);
+  }
+  const Points start = position_;
+  const double loadBefore = systemLoadEnergy(start);
+  prepareForms(position_, false);
+  const Points g = totalGradient(position_, false);  // = -f
+  const SparseMatrix& M = model_.reducedMass();
+  const SparseMatrix& D = model_.reducedDamping();
+  // (2M~ + h D~) delta = 2 h^2 f - 2 h D~ (p - p_prev), p(t+h) = 2p - p_prev + delta.
+  Points rhs = -2.0 * h * h * g - 2.0 * h * applyScalarMatrix(D, position_ - previous_);
+  zeroFixed(rhs);
+  const Eigen::VectorXd b = gather(rhs, freeDofs_);
+  const SparseMatrix lhs = 2.0 * M + h * D;
+  const Eigen::VectorXd diagonal = lhs.diagonal();
+  Points direction = Points::Zero(position_.rows(), 3);
+  const LinearOperator op = [&](const Eigen::VectorXd& in, Eigen::VectorXd& out) {
+    direction.setZero();
+    scatter(in, freeDofs_, direction);
+    Points product = applyScalarMatrix(lhs, direction);
+    out = gather(product, freeDofs_);
+  };
+  const LinearOperator jacobi = [&](const Eigen::VectorXd& r, Eigen::VectorXd& z) {
+    z.resize(r.size());
+    for (size_t k = 0; k < freeDofs_.size(); ++k)
+      z[Eigen::Index(k)] = r[Eigen::Index(k)] / diagonal[freeDofs_[k] / 3];
+  };
+  Eigen::VectorXd x = lastIncrement_.rows() == position_.rows()
+                          ? gather(lastIncrement_, freeDofs_)
+                          : Eigen::VectorXd::Zero(b.size());
+  const CgResult cg = conjugateGradient(op, jacobi, b, x, settings_.paperTolerance,
+                                        settings_.maxIterations);
+  a.iterations = cg.iterations;
+  a.residual = cg.relativeResidual;
+  Points delta = Points::Zero(position_.rows(), 3);
+  scatter(x, freeDofs_, delta);
+  lastIncrement_ = delta;
+  Points next = 2.0 * position_ - previous_ + delta;
+  for (size_t i = 0; i < fixed_.size(); ++i)
+    if (fixed_[i]) next.row(Eigen::Index(i)) = start.row(Eigen::Index(i));
+  previous_ = position_;
+  position_ = next;
+  velocity_ = (position_ - previous_) / h;
+  Attempt check = checkState(loadBefore);
+  check.iterations = a.iterations;
+  check.residual = a.residual;
+  return check;
+}
+
+StepReport Simulator::step() {
+  StepReport report;
+  const Points savedPosition = position_, savedVelocity = velocity_, savedPrevious = previous_;
+  const double savedPreviousStep = previousStep_, savedBudget = energyBudget_;
+  std::string firstFailure;
+  for (int halvings = 0; halvings <= settings_.maxHalvings; ++halvings) {
+    const int substeps = 1 << halvings;
+    const double h = settings_.timeStep / substeps;
+    bool ok = true;
+    report.iterations = 0;
+    report.residual = 0;
+    for (int s = 0; s < substeps && ok; ++s) {
+      const Attempt a = settings_.integrator == Integrator::Paper ? paperSubstep(h)
+                                                                   : implicitSubstep(h);
+      report.iterations += a.iterations;
+      report.residual = std::max(report.residual, a.residual);
+      if (!a.ok) {
+        ok = false;
+        if (firstFailure.empty()) firstFailure = a.failure;
+      }
+    }
+    if (ok) {
+      report.substeps = substeps;
+      time_ += settings_.timeStep;
+      if (halvings > 0)
+        report.message = std::string("step of ") + formatNumber(settings_.timeStep) +
+                         " s failed (" + firstFailure + "); restored and took " +
+                         std::to_string(substeps) + " sub-steps of " + formatNumber(h) + " s";
+      return report;
+    }
+    position_ = savedPosition;
+    velocity_ = savedVelocity;
+    previous_ = savedPrevious;
+    previousStep_ = savedPreviousStep;
+    energyBudget_ = savedBudget;
+    lastIncrement_.resize(0, 3);
+  }
+  report.ok = false;
+  report.substeps = 1 << settings_.maxHalvings;
+  report.message = "step failed (" + firstFailure + ") even with " +
+                   std::to_string(report.substeps) +
+                   " sub-steps; the state before the step was kept. Reduce the time step or "
+                   "use the implicit integrator";
+  return report;
+}
+
+StaticReport Simulator::solveStatic(double tolerance, int maxNewtonIterations) {
+  StaticReport report;
+  velocity_.setZero();
+  const bool ok = preconditioner_->update(model_, 0.0, 0.0, 1.0, freeDofs_);
+  if (!ok) {
+    report.message = "the stiffness could not be factored";
+    return report;
+  }
+  // Scale of the loads: the external gradient at the start.
+  prepareForms(position_, false);
+  double scale = 0;
+  {
+    model_.nodesFromControl(position_, scratchNodes_);
+    const FormState state{position_, scratchNodes_};
+    FormGradient g;
+    g.setZero(position_.rows(), scratchNodes_.rows());
+    for (auto& load : loads_) load->addGradient(state, g);
+    model_.addToControl(g.nodes, g.control);
+    zeroFixed(g.control);
+    scale = g.control.norm();
+  }
+  if (scale == 0) {
+    report.converged = true;
+    report.message = "no loads";
+    return report;
+  }
+  Points direction = Points::Zero(position_.rows(), 3);
+  const LinearOperator op = [&](const Eigen::VectorXd& in, Eigen::VectorXd& out) {
+    direction.setZero();
+    scatter(in, freeDofs_, direction);
+    out = gather(hessianProduct(direction, false), freeDofs_);
+  };
+  const LinearOperator pre = [&](const Eigen::VectorXd& r, Eigen::VectorXd& z) {
+    preconditioner_->apply(r, z);
+  };
+  for (int it = 0; it < maxNewtonIterations; ++it) {
+    prepareForms(position_, false);
+    const Points g = totalGradient(position_, false);
+    report.residual = g.norm() / scale;
+    if (!std::isfinite(report.residual)) {
+      report.message = "the solve produced non-finite forces";
+      return report;
+    }
+    if (report.residual <= tolerance) {
+      report.converged = true;
+      return report;
+    }
+    const Eigen::VectorXd b = -gather(g, freeDofs_);
+    Eigen::VectorXd x = Eigen::VectorXd::Zero(b.size());
+    const CgResult cg = conjugateGradient(op, pre, b, x, std::min(1e-3, 0.1 * tolerance / report.residual), settings_.maxIterations);
+    report.cgIterations += cg.iterations;
+
+    report.newtonIterations = it + 1;
+    Points dx = Points::Zero(position_.rows(), 3);
+    scatter(x, freeDofs_, dx);
+    position_ += dx;
+    // Positions carry about 1e-16 of the solid's size: once the update is below what they
+    // can represent of the displacement, the remaining force residual is rounding (it grows
+    // with Young's modulus) and more iterations cannot reduce it.
+    const double displacement = (position_ - model_.restControl()).cwiseAbs().maxCoeff();
+    if (dx.cwiseAbs().maxCoeff() <= 1e-10 * displacement) {
+      prepareForms(position_, false);
+      report.residual = totalGradient(position_, false).norm() / scale;
+      report.converged = std::isfinite(report.residual);
+      return report;
+    }
+  }
+  prepareForms(position_, false);
+  report.residual = totalGradient(position_, false).norm() / scale;
+  report.converged = report.residual <= tolerance;
+  if (!report.converged)
+    report.message = "no equilibrium within " + std::to_string(maxNewtonIterations) +
+                     " Newton iterations (residual " + formatNumber(report.residual) + ")";
+  return report;
+}
+
+}  // namespace sculpt

@@ -1,0 +1,134 @@
+#pragma once
+// Time integration and static equilibrium of a FemModel (local-frame-fem.md, "Integrators"):
+//  - Paper: eq. 20, central differences with the elastic force at time t; the constant matrix
+//    2M~ + dt D~ is solved by Jacobi-preconditioned CG warm-started from the previous step, to a
+//    relative residual of 1e-4. We solve for the increment over the extrapolation 2p(t) - p(t-dt)
+//    (the same equation), so that 1e-4 is relative to the forces and not to the positions.
+//  - Implicit (default): backward Euler, the co-rotated stiffness linearised once per step (one
+//    Newton step on the incremental potential), matrix-free CG preconditioned by a Cholesky
+//    factor of M~ + h D~ + h^2 K~lin (see linear_stiffness.h).
+//  - Static: Newton on the co-rotated equilibrium with the same CG.
+// Fixed control points are eliminated. A step that produces non-finite values or a kinetic energy
+// beyond what the loads could have supplied is undone and retried with halved sub-steps.
+
+#include <Eigen/Geometry>
+#include <memory>
+#include <optional>
+#include <string>
+#include <vector>
+
+#include "sim/fem_model.h"
+#include "sim/form.h"
+
+namespace sculpt {
+
+class ElasticForm;
+class InertiaForm;
+class DampingForm;
+class SystemPreconditioner;
+
+enum class Integrator { Paper, Implicit };
+const char* integratorName(Integrator integrator);
+std::optional<Integrator> parseIntegrator(const std::string& name);
+
+struct SimulationSettings {
+  Integrator integrator = Integrator::Implicit;
+  double timeStep = 1.0 / 60.0;     ///< seconds per step()
+  bool corotated = true;            ///< false: small-strain linear elasticity (rotations = I)
+  double paperTolerance = 1e-4;     ///< relative CG residual of the paper's scheme
+  double implicitTolerance = 1e-6;  ///< relative CG residual of the implicit and static solves
+  int maxIterations = 2000;         ///< CG iterations per solve
+  int maxHalvings = 10;             ///< a failing step is retried with up to 2^this sub-steps
+};
+
+struct StepReport {
+  bool ok = true;         ///< false: nothing worked, the state is the one before the step
+  int substeps = 1;       ///< sub-steps finally used
+  int iterations = 0;     ///< CG iterations, all sub-steps together
+  double residual = 0;    ///< worst relative CG residual met
+  std::string message;    ///< what went wrong and what was done about it; empty when nothing
+};
+
+struct StaticReport {
+  bool converged = false;
+  int newtonIterations = 0;
+  int cgIterations = 0;
+  double residual = 0;  ///< relative force residual |g| / |f_ext| on the free coordinates
+  std::string message;
+};
+
+class Simulator {
+ public:
+  explicit Simulator(FemModel& model, SimulationSettings settings = {});
+  ~Simulator();
+  Simulator(const Simulator&) = delete;
+  Simulator& operator=(const Simulator&) = delete;
+
+  FemModel& model() { return model_; }
+  const SimulationSettings& settings() const { return settings_; }
+  /// Returns a sentence when a setting is invalid (and keeps the old settings).
+  std::string setSettings(const SimulationSettings& settings);
+
+  const Points& positions() const { return position_; }  ///< control points
+  const Points& velocities() const { return velocity_; }
+  void setState(const Points& positions, const Points& velocities);
+  double time() const { return time_; }
+
+  const std::vector<uint8_t>& fixedMask() const { return fixed_; }
+  void setFixed(uint32_t controlPoint, bool fixed);
+  /// Fixes every control point whose rest position lies in `box`; returns how many.
+  uint32_t fixInBox(const Eigen::AlignedBox3d& box);
+
+  /// Adds an external load (gravity, forces, springs, pressure, contact); returns it.
+  Form* addLoad(std::unique_ptr<Form> load);
+  void removeLoad(const Form* load);
+
+  /// Advances by settings().timeStep.
+  StepReport step();
+  /// Moves the free control points to equilibrium under the loads (velocities set to zero).
+  StaticReport solveStatic(double tolerance = 1e-9, int maxNewtonIterations = 40);
+
+  double kineticEnergy() const;  ///< 1/2 v^T M~ v
+  double elasticEnergy();        ///< with rotations of the current state
+  double loadEnergy();           ///< sum of the loads' potentials
+
+ private:
+  struct Attempt {
+    bool ok = true;
+    int iterations = 0;
+    double residual = 0;
+    std::string failure;
+  };
+  Attempt implicitSubstep(double h);
+  Attempt paperSubstep(double h);
+  Attempt checkState(double loadEnergyBefore);
+
+  // The forms in the current system and their summed gradient / Hessian product, folded onto
+  // the control points with fixed rows zeroed.
+  void prepareForms(const Points& x, bool withInertia);
+  Points totalGradient(const Points& x, bool withInertia);
+  Points hessianProduct(const Points& dx, bool withInertia);
+  void zeroFixed(Points& x) const;
+  double systemLoadEnergy(const Points& x);
+  void refreshFreeDofs();
+
+  FemModel& model_;
+  SimulationSettings settings_;
+  std::unique_ptr<ElasticForm> elastic_;
+  std::unique_ptr<InertiaForm> inertia_;
+  std::unique_ptr<DampingForm> damping_;
+  FormList loads_;
+  std::unique_ptr<SystemPreconditioner> preconditioner_;
+
+  Points position_, velocity_, previous_;  // previous_: p(t - dt) of the paper's scheme
+  double previousStep_ = 0;                // the dt that previous_ belongs to (0: none)
+  Points lastIncrement_;                   // warm start of the CG solves
+  double time_ = 0;
+  std::vector<uint8_t> fixed_;
+  std::vector<int> freeDofs_;  // indices 3i + c of free coordinates
+  double energyBudget_ = 0;
+  double energyFloor_ = 0;
+  Points scratchNodes_, scratchNodeDirection_;
+};
+
+}  // namespace sculpt

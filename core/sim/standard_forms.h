@@ -1,0 +1,94 @@
+#pragma once
+// The forms every simulation has: elasticity, inertia and damping of the implicit step, gravity.
+
+#include "sim/fem_model.h"
+#include "sim/form.h"
+
+namespace sculpt {
+
+/// Co-rotated elasticity on the nodes; prepare() updates the element rotations (unless the
+/// model is linear), after which energy, gradient and Hessian are exact for fixed rotations.
+class ElasticForm : public Form {
+ public:
+  ElasticForm(FemModel& model, bool corotated) : model_(model), corotated_(corotated) {}
+  std::string name() const override { return "elastic"; }
+  void prepare(const FormState& x) override;
+  double energy(const FormState& x) const override;
+  void addGradient(const FormState& x, FormGradient& g) const override;
+  void addHessianProduct(const FormState& x, const FormState& dx, FormGradient& r) const override;
+
+ private:
+  FemModel& model_;
+  bool corotated_;
+};
+
+/// (1 / (2 h^2)) (p - p^)^T M~ (p - p^): the inertia of a backward Euler step, p^ = p_n + h v_n.
+class InertiaForm : public Form {
+ public:
+  InertiaForm(const FemModel& model, double h) : model_(model), h_(h) {}
+  std::string name() const override { return "inertia"; }
+  void setPrediction(const Points& predicted) { predicted_ = predicted; }
+  double energy(const FormState& x) const override;
+  void addGradient(const FormState& x, FormGradient& g) const override;
+  void addHessianProduct(const FormState& x, const FormState& dx, FormGradient& r) const override;
+
+ private:
+  const FemModel& model_;
+  double h_;
+  Points predicted_;
+};
+
+/// (1 / (2 h)) (p - p_n)^T D~ (p - p_n): Rayleigh's dissipation of a backward Euler step.
+class DampingForm : public Form {
+ public:
+  DampingForm(const FemModel& model, double h) : model_(model), h_(h) {}
+  std::string name() const override { return "damping"; }
+  void setStart(const Points& start) { start_ = start; }
+  double energy(const FormState& x) const override;
+  void addGradient(const FormState& x, FormGradient& g) const override;
+  void addHessianProduct(const FormState& x, const FormState& dx, FormGradient& r) const override;
+
+ private:
+  const FemModel& model_;
+  double h_;
+  Points start_;
+};
+
+/// -sum g . (M~ p): uniform gravity g (m/s^2) on the consistent mass (A 1 = 1, so this is the
+/// weight of every node projected with A^T).
+class GravityForm : public Form {
+ public:
+  GravityForm(const FemModel& model, const Eigen::Vector3d& g) : model_(model), g_(g) {}
+  std::string name() const override { return "gravity"; }
+  double energy(const FormState& x) const override;
+  void addGradient(const FormState& x, FormGradient& g) const override;
+  void addHessianProduct(const FormState&, const FormState&, FormGradient&) const override {}
+
+ private:
+  const FemModel& model_;
+  Eigen::Vector3d g_;
+};
+
+/// Scalar matrix S applied to each coordinate column of an N by 3 array.
+Points applyScalarMatrix(const SparseMatrix& S, const Points& x);
+
+}  // namespace sculpt
+
+namespace sculpt {
+
+/// -sum_i f_i . p_i: generalised forces applied directly to control points (the command line's
+/// --force BOX spreads a total force equally over the control points in a box).
+class ControlForceForm : public Form {
+ public:
+  explicit ControlForceForm(Points forces) : forces_(std::move(forces)) {}
+  std::string name() const override { return "control forces"; }
+  const Points& forces() const { return forces_; }
+  double energy(const FormState& x) const override { return -x.control.cwiseProduct(forces_).sum(); }
+  void addGradient(const FormState&, FormGradient& g) const override { g.control -= forces_; }
+  void addHessianProduct(const FormState&, const FormState&, FormGradient&) const override {}
+
+ private:
+  Points forces_;
+};
+
+}  // namespace sculpt
