@@ -4,6 +4,9 @@
 
 #include "fem/polar_rotation.h"
 #include "fem/quadrature.h"
+#include "fem/linear_kernel.h"
+#include "fem/tricubic_kernel.h"
+#include <algorithm>
 #include "subdiv/tricubic_patch.h"
 #include "util/parallel_for.h"
 
@@ -25,33 +28,47 @@ const TricubicTables& tables() {
   return t;
 }
 
-// Stress work at one Gauss point: returns H = V R sigma J^-T (the derivative of the point's
-// energy with respect to the parametric gradient) and adds the energy when asked. `gradU` is
-// the displacement gradient (or its variation); the strain sym(R^T (I + gradU)) - I is formed
-// as sym(R^T gradU) + (sym(R) - I) so that small strains of stiff materials keep their digits
-// (positions of size L would otherwise add E * L * 1e-16 of noise to every stress).
-inline Eigen::Matrix3d gaussPointStress(const Eigen::Matrix3d& gradU, const Eigen::Matrix3d& R,
-                                        const Eigen::Matrix3d& inverseJacobianT, double volume,
-                                        const LameParameters& lame, bool withRestTerm,
-                                        double* energy) {
-  Eigen::Matrix3d eps = R.transpose() * gradU;
-  eps = 0.5 * (eps + eps.transpose()).eval();
-  if (withRestTerm) {
-    eps += 0.5 * (R + R.transpose());
-    eps -= Eigen::Matrix3d::Identity();
-  }
-  const double trace = eps.trace();
-  Eigen::Matrix3d sigma = 2.0 * lame.mu * eps;
-  sigma.diagonal().array() += lame.lambda * trace;
-  if (energy)
-    *energy += volume * (lame.mu * eps.squaredNorm() + 0.5 * lame.lambda * trace * trace);
-  return volume * R * sigma * inverseJacobianT;
-}
-
 }  // namespace
 
 ElasticKernel::ElasticKernel(const FemMesh& mesh)
-    : mesh_(mesh), rotations_(mesh.numElements(), Eigen::Matrix3d::Identity()) {}
+    : mesh_(mesh), rotations_(mesh.numElements(), Eigen::Matrix3d::Identity()) {
+  // Inverse Jacobians in the kernel's layout [i*4 + j][row*3 + col][k].
+  const uint32_t numTricubic = mesh.numTricubic();
+  tricubicInverseJacobian_.resize(size_t(numTricubic) * 576);
+  for (uint32_t e = 0; e < numTricubic; ++e)
+    for (int ij = 0; ij < 16; ++ij)
+      for (int k = 0; k < 4; ++k) {
+        const Eigen::Matrix3d& J = mesh.tricubicInverseJacobian[size_t(e) * 64 + ij * 4 + k];
+        for (int rc = 0; rc < 9; ++rc)
+          tricubicInverseJacobian_[size_t(e) * 576 + ij * 36 + rc * 4 + k] = J(rc / 3, rc % 3);
+      }
+  linearShapeGradient_.resize(size_t(mesh.numLinear()) * 192);
+  for (uint32_t l = 0; l < mesh.numLinear(); ++l)
+    for (int q = 0; q < 8; ++q) {
+      const LinearShapeGradient& dN = mesh.linearShapeGradient[size_t(l) * 8 + q];
+      for (int a = 0; a < 8; ++a)
+        for (int c = 0; c < 3; ++c) linearShapeGradient_[size_t(l) * 192 + (a * 3 + c) * 8 + q] = dN(a, c);
+    }
+  refreshMaterial();
+}
+
+void ElasticKernel::refreshMaterial() {
+  const size_t count = size_t(mesh_.numTricubic()) * 64;
+  tricubicVolumeLambda_.resize(count);
+  tricubicVolumeMu_.resize(count);
+  for (size_t q = 0; q < count; ++q) {
+    tricubicVolumeLambda_[q] = mesh_.gaussVolume[q] * mesh_.gaussLame[q].lambda;
+    tricubicVolumeMu_[q] = mesh_.gaussVolume[q] * mesh_.gaussLame[q].mu;
+  }
+  const size_t linearCount = size_t(mesh_.numLinear()) * 8;
+  linearVolumeLambda_.resize(linearCount);
+  linearVolumeMu_.resize(linearCount);
+  for (size_t k = 0; k < linearCount; ++k) {
+    const size_t q = count + k;
+    linearVolumeLambda_[k] = mesh_.gaussVolume[q] * mesh_.gaussLame[q].lambda;
+    linearVolumeMu_[k] = mesh_.gaussVolume[q] * mesh_.gaussLame[q].mu;
+  }
+}
 
 void ElasticKernel::resetRotations() {
   rotations_.assign(mesh_.numElements(), Eigen::Matrix3d::Identity());
@@ -100,143 +117,60 @@ void ElasticKernel::addHessianProduct(const Points& dx, Points& result) const {
 }
 
 double ElasticKernel::run(const Points& x, Mode mode, Points* out, bool withEnergy) const {
-  const TricubicTables& T = tables();
-  const bool subtractIdentity = mode == Mode::Gradient;
+  const bool withRestTerm = mode == Mode::Gradient;  // x holds positions, not a direction
   const Points& rest = mesh_.restNodes;
   const uint32_t numTricubic = mesh_.numTricubic();
-  const Eigen::Index numNodes = mesh_.numNodes();
-  const unsigned workers = workerCount();
+  const uint32_t numElements = mesh_.numElements();
+  const unsigned workers = std::min<unsigned>(workerCount(), std::max(1u, numElements / 32));
   if (out) {
     workerBuffers_.resize(workers);
-    for (Points& buffer : workerBuffers_) buffer.setZero(numNodes, 3);
+    for (Points& buffer : workerBuffers_) buffer.setZero(mesh_.numNodes(), 3);
   }
   std::vector<double> workerEnergy(workers, 0.0);
+  // Equal work per worker: a tricubic element costs about three linear ones.
+  const double totalCost = 3.0 * numTricubic + (numElements - numTricubic);
+  auto chunkStart = [&](unsigned k) {
+    const double target = totalCost * k / workers;
+    return target <= 3.0 * numTricubic
+               ? static_cast<uint32_t>(target / 3.0)
+               : std::min(numElements, static_cast<uint32_t>(numTricubic + (target - 3.0 * numTricubic)));
+  };
 
-  parallelChunks(mesh_.numElements(), 64, [&](uint32_t begin, uint32_t end, unsigned worker) {
-    Points* sink = out ? &workerBuffers_[worker] : nullptr;
-    double* energy = withEnergy ? &workerEnergy[worker] : nullptr;
-    for (uint32_t e = begin; e < end; ++e) {
-      const Eigen::Matrix3d& R = rotations_[e];
-      const uint32_t gauss0 = mesh_.gaussBegin(e);
-      if (e < numTricubic) {
-        const auto& ids = mesh_.tricubicNodes[e];
-        double xe[64][3];  // displacements (gradient) or the direction (Hessian)
-        for (int n = 0; n < 64; ++n)
+  parallelChunks(workers, 1, [&](uint32_t firstWorker, uint32_t lastWorker, unsigned) {
+    for (uint32_t worker = firstWorker; worker < lastWorker; ++worker) {
+      Points* sink = out ? &workerBuffers_[worker] : nullptr;
+      double energy = 0;
+      alignas(64) double ue[64 * 3];  // displacements (gradient) or the direction (Hessian)
+      alignas(64) double ge[64 * 3];
+      const uint32_t end = worker + 1 == workers ? numElements : chunkStart(worker + 1);
+      for (uint32_t e = chunkStart(worker); e < end; ++e) {
+        const Eigen::Matrix3d& R = rotations_[e];
+        const bool tricubic = e < numTricubic;
+        const uint32_t* ids = tricubic ? mesh_.tricubicNodes[e].data()
+                                       : mesh_.linearNodes[e - numTricubic].data();
+        const int count = tricubic ? kTricubicNodes : kLinearNodes;
+        for (int n = 0; n < count; ++n)
           for (int c = 0; c < 3; ++c)
-            xe[n][c] = subtractIdentity ? x(ids[n], c) - rest(ids[n], c) : x(ids[n], c);
-        // Forward sum factorisation: contract w, then v, then u.
-        double P0[4][4][4][3], P1[4][4][4][3];  // [a][b][k][c]
-        for (int a = 0; a < 4; ++a)
-          for (int b = 0; b < 4; ++b)
-            for (int k = 0; k < 4; ++k)
-              for (int c = 0; c < 3; ++c) {
-                double s0 = 0, s1 = 0;
-                for (int g = 0; g < 4; ++g) {
-                  s0 += T.B[k][g] * xe[a * 16 + b * 4 + g][c];
-                  s1 += T.D[k][g] * xe[a * 16 + b * 4 + g][c];
-                }
-                P0[a][b][k][c] = s0;
-                P1[a][b][k][c] = s1;
-              }
-        double Q00[4][4][4][3], Q10[4][4][4][3], Q01[4][4][4][3];  // [a][j][k][c]
-        for (int a = 0; a < 4; ++a)
-          for (int j = 0; j < 4; ++j)
-            for (int k = 0; k < 4; ++k)
-              for (int c = 0; c < 3; ++c) {
-                double s00 = 0, s10 = 0, s01 = 0;
-                for (int b = 0; b < 4; ++b) {
-                  s00 += T.B[j][b] * P0[a][b][k][c];
-                  s10 += T.D[j][b] * P0[a][b][k][c];
-                  s01 += T.B[j][b] * P1[a][b][k][c];
-                }
-                Q00[a][j][k][c] = s00;
-                Q10[a][j][k][c] = s10;
-                Q01[a][j][k][c] = s01;
-              }
-        double Hu[4][4][4][3], Hv[4][4][4][3], Hw[4][4][4][3];  // [i][j][k][c]
-        for (int i = 0; i < 4; ++i)
-          for (int j = 0; j < 4; ++j)
-            for (int k = 0; k < 4; ++k) {
-              Eigen::Matrix3d G;
-              for (int c = 0; c < 3; ++c) {
-                double su = 0, sv = 0, sw = 0;
-                for (int a = 0; a < 4; ++a) {
-                  su += T.D[i][a] * Q00[a][j][k][c];
-                  sv += T.B[i][a] * Q10[a][j][k][c];
-                  sw += T.B[i][a] * Q01[a][j][k][c];
-                }
-                G(c, 0) = su;
-                G(c, 1) = sv;
-                G(c, 2) = sw;
-              }
-              const int q = i * 16 + j * 4 + k;
-              const Eigen::Matrix3d& Jinv = mesh_.tricubicInverseJacobian[size_t(e) * 64 + q];
-              const Eigen::Matrix3d H =
-                  gaussPointStress(G * Jinv, R, Jinv.transpose(), mesh_.gaussVolume[gauss0 + q],
-                                   mesh_.gaussLame[gauss0 + q], subtractIdentity, energy);
-              for (int c = 0; c < 3; ++c) {
-                Hu[i][j][k][c] = H(c, 0);
-                Hv[i][j][k][c] = H(c, 1);
-                Hw[i][j][k][c] = H(c, 2);
-              }
-            }
-        if (!sink) continue;
-        // Transposed contractions: u, then v, then w.
-        for (int a = 0; a < 4; ++a)
-          for (int j = 0; j < 4; ++j)
-            for (int k = 0; k < 4; ++k)
-              for (int c = 0; c < 3; ++c) {
-                double s00 = 0, s10 = 0, s01 = 0;
-                for (int i = 0; i < 4; ++i) {
-                  s00 += T.D[i][a] * Hu[i][j][k][c];
-                  s10 += T.B[i][a] * Hv[i][j][k][c];
-                  s01 += T.B[i][a] * Hw[i][j][k][c];
-                }
-                Q00[a][j][k][c] = s00;
-                Q10[a][j][k][c] = s10;
-                Q01[a][j][k][c] = s01;
-              }
-        for (int a = 0; a < 4; ++a)
-          for (int b = 0; b < 4; ++b)
-            for (int k = 0; k < 4; ++k)
-              for (int c = 0; c < 3; ++c) {
-                double s0 = 0, s1 = 0;
-                for (int j = 0; j < 4; ++j) {
-                  s0 += T.B[j][b] * Q00[a][j][k][c] + T.D[j][b] * Q10[a][j][k][c];
-                  s1 += T.B[j][b] * Q01[a][j][k][c];
-                }
-                P0[a][b][k][c] = s0;
-                P1[a][b][k][c] = s1;
-              }
-        for (int a = 0; a < 4; ++a)
-          for (int b = 0; b < 4; ++b)
-            for (int g = 0; g < 4; ++g) {
-              const uint32_t node = ids[a * 16 + b * 4 + g];
-              for (int c = 0; c < 3; ++c) {
-                double s = 0;
-                for (int k = 0; k < 4; ++k)
-                  s += T.B[k][g] * P0[a][b][k][c] + T.D[k][g] * P1[a][b][k][c];
-                (*sink)(node, c) += s;
-              }
-            }
-      } else {
-        const uint32_t l = e - numTricubic;
-        const auto& ids = mesh_.linearNodes[l];
-        Eigen::Matrix<double, kLinearNodes, 3> xe, ge = Eigen::Matrix<double, kLinearNodes, 3>::Zero();
-        for (int a = 0; a < kLinearNodes; ++a)
-          xe.row(a) = subtractIdentity ? Eigen::RowVector3d(x.row(ids[a]) - rest.row(ids[a]))
-                                       : Eigen::RowVector3d(x.row(ids[a]));
-        for (int q = 0; q < kLinearGaussPoints; ++q) {
-          const LinearShapeGradient& dN = mesh_.linearShapeGradient[size_t(l) * 8 + q];
-          const Eigen::Matrix3d F = xe.transpose() * dN;
-          const Eigen::Matrix3d H =
-              gaussPointStress(F, R, Eigen::Matrix3d::Identity(), mesh_.gaussVolume[gauss0 + q],
-                               mesh_.gaussLame[gauss0 + q], subtractIdentity, energy);
-          ge.noalias() += dN * H.transpose();
+            ue[n * 3 + c] = withRestTerm ? x(ids[n], c) - rest(ids[n], c) : x(ids[n], c);
+        if (sink) std::fill(ge, ge + count * 3, 0.0);
+        double* gradient = sink ? ge : nullptr;
+        if (tricubic) {
+          const TricubicPacked packed{tricubicInverseJacobian_.data() + size_t(e) * 576,
+                                      tricubicVolumeLambda_.data() + size_t(e) * 64,
+                                      tricubicVolumeMu_.data() + size_t(e) * 64};
+          energy += tricubicElementKernel(ue, packed, R, withRestTerm, withEnergy, gradient);
+        } else {
+          const size_t l = e - numTricubic;
+          const LinearPacked packed{linearShapeGradient_.data() + l * 192,
+                                    linearVolumeLambda_.data() + l * 8,
+                                    linearVolumeMu_.data() + l * 8};
+          energy += linearElementKernel(ue, packed, R, withRestTerm, withEnergy, gradient);
         }
         if (!sink) continue;
-        for (int a = 0; a < kLinearNodes; ++a) sink->row(ids[a]) += ge.row(a);
+        for (int n = 0; n < count; ++n)
+          for (int c = 0; c < 3; ++c) (*sink)(ids[n], c) += ge[n * 3 + c];
       }
+      workerEnergy[worker] = energy;
     }
   });
 

@@ -35,6 +35,8 @@ class ElasticKernel {
   void addHessianProduct(const Points& dx, Points& result) const;
 
   const FemMesh& mesh() const { return mesh_; }
+  /// Re-reads the Gauss-point materials (after FemMesh::gaussLame changed).
+  void refreshMaterial();
 
  private:
   enum class Mode { Gradient, HessianProduct };
@@ -45,6 +47,9 @@ class ElasticKernel {
   const FemMesh& mesh_;
   std::vector<Eigen::Matrix3d> rotations_;
   mutable std::vector<Points> workerBuffers_;
+  // Tricubic rest data packed for tricubicElementKernel.
+  std::vector<double> tricubicInverseJacobian_, tricubicVolumeLambda_, tricubicVolumeMu_;
+  std::vector<double> linearShapeGradient_, linearVolumeLambda_, linearVolumeMu_;  // [l][a*3+c][q]
 };
 
 }  // namespace sculpt

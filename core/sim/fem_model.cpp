@@ -91,6 +91,7 @@ long FemModel::paintMaterial(const Eigen::Vector3d& centre, double radius,
     ++changed;
   }
   if (changed > 0) {
+    elastic_->refreshMaterial();
     matricesStale_ = true;
     ++materialVersion_;
   }

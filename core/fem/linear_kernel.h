@@ -1,0 +1,20 @@
+#pragma once
+// The co-rotated 8-node trilinear element (pyramids are the same element with a collapsed top),
+// its 8 Gauss points processed together so that the compiler vectorises across them.
+
+#include <Eigen/Core>
+
+namespace sculpt {
+
+/// Rest data of one linear element, packed for the kernel.
+struct LinearPacked {
+  const double* shapeGradient;  ///< [a*3 + c][q]: dN_a/dX_c at Gauss point q, 8*3*8 values
+  const double* volumeLambda;   ///< [q]
+  const double* volumeMu;       ///< [q]
+};
+
+/// u: 8 node values, node a at u[a*3 + c]. Same contract as tricubicElementKernel.
+double linearElementKernel(const double* u, const LinearPacked& element, const Eigen::Matrix3d& R,
+                           bool withRestTerm, bool withEnergy, double* gradient);
+
+}  // namespace sculpt

@@ -1,0 +1,25 @@
+#pragma once
+// The matrix-free tricubic B-spline element (local-frame-fem.md, "Making it fast"): parametric
+// gradients at the 4x4x4 Gauss points by sum factorisation (three successive 4x4 contractions),
+// co-rotated linear stress, and the transposed contractions back onto the 64 nodes. Gauss points
+// are processed four at a time (the k direction) so that the compiler can vectorise.
+
+#include <Eigen/Core>
+
+namespace sculpt {
+
+/// Rest data of one tricubic element, packed for the kernel.
+struct TricubicPacked {
+  const double* inverseJacobian;  ///< [i*4 + j][row*3 + col][k]: (dX/dxi)^-1, 16*9*4 values
+  const double* volumeLambda;     ///< [i*16 + j*4 + k]: Gauss volume times lambda
+  const double* volumeMu;         ///< [i*16 + j*4 + k]: Gauss volume times mu
+};
+
+/// u: 64 node values (displacements or a direction), node a*16+b*4+g at u[(a*16+b*4+g)*3 + c].
+/// Adds the node gradient to `gradient` (same layout) when non-null and returns the energy
+/// contribution when `withEnergy`. `withRestTerm` adds sym(R) - I to the strain (gradient mode).
+double tricubicElementKernel(const double* u, const TricubicPacked& element,
+                             const Eigen::Matrix3d& R, bool withRestTerm, bool withEnergy,
+                             double* gradient);
+
+}  // namespace sculpt
