@@ -98,10 +98,12 @@ class Simulator {
     int iterations = 0;
     double residual = 0;
     std::string failure;
+    bool hopeless = false;  ///< smaller steps cannot help (non-finite inputs)
   };
   Attempt implicitSubstep(double h);
   Attempt paperSubstep(double h);
-  Attempt checkState(double loadEnergyBefore);
+  Attempt checkState(const Points& start, double loadEnergyBefore);
+  bool finiteForces(const Points& gradient, Attempt& attempt) const;
 
   // The forms in the current system and their summed gradient / Hessian product, folded onto
   // the control points with fixed rows zeroed.
@@ -128,6 +130,7 @@ class Simulator {
   std::vector<int> freeDofs_;  // indices 3i + c of free coordinates
   double energyBudget_ = 0;
   double energyFloor_ = 0;
+  double extent_ = 1;  // diagonal of the rest bounding box
   Points scratchNodes_, scratchNodeDirection_;
 };
 
