@@ -126,7 +126,7 @@ void Simulator::zeroFixed(Points& x) const {
     if (fixed_[i]) x.row(Eigen::Index(i)).setZero();
 }
 
-void Simulator::prepareForms(const Points& x, bool withInertia) {
+Points Simulator::prepareAndGradient(const Points& x, bool withInertia) {
   model_.nodesFromControl(x, scratchNodes_);
   const FormState state{x, scratchNodes_};
   elastic_->prepare(state);
@@ -135,11 +135,6 @@ void Simulator::prepareForms(const Points& x, bool withInertia) {
     inertia_->prepare(state);
     damping_->prepare(state);
   }
-}
-
-Points Simulator::totalGradient(const Points& x, bool withInertia) {
-  model_.nodesFromControl(x, scratchNodes_);
-  const FormState state{x, scratchNodes_};
   FormGradient g;
   g.setZero(x.rows(), scratchNodes_.rows());
   elastic_->addGradient(state, g);
@@ -249,8 +244,7 @@ Simulator::Attempt Simulator::implicitSubstep(double h) {
   const double loadBefore = systemLoadEnergy(start);
 
   position_ = predicted;
-  prepareForms(position_, true);
-  const Points g = totalGradient(position_, true);
+  const Points g = prepareAndGradient(position_, true);
   if (!finiteForces(g, a)) {
     position_ = start;
     return a;
@@ -290,8 +284,7 @@ Simulator::Attempt Simulator::paperSubstep(double h) {
   }
   const Points start = position_;
   const double loadBefore = systemLoadEnergy(start);
-  prepareForms(position_, false);
-  const Points g = totalGradient(position_, false);  // = -f
+  const Points g = prepareAndGradient(position_, false);  // = -f
   if (!finiteForces(g, a)) return a;
   const SparseMatrix& M = model_.reducedMass();
   const SparseMatrix& D = model_.reducedDamping();
@@ -299,8 +292,16 @@ Simulator::Attempt Simulator::paperSubstep(double h) {
   Points rhs = -2.0 * h * h * g - 2.0 * h * applyScalarMatrix(D, position_ - previous_);
   zeroFixed(rhs);
   const Eigen::VectorXd b = gather(rhs, freeDofs_);
-  const SparseMatrix lhs = 2.0 * M + h * D;
-  const Eigen::VectorXd diagonal = lhs.diagonal();
+  // 2M~ + h D~ changes only with the step and the materials.
+  if (paperMatrixStep_ != h || paperMatrixVersion_ != model_.materialVersion() ||
+      paperMatrix_.rows() == 0) {
+    paperMatrix_ = 2.0 * M + h * D;
+    paperDiagonal_ = paperMatrix_.diagonal();
+    paperMatrixStep_ = h;
+    paperMatrixVersion_ = model_.materialVersion();
+  }
+  const SparseMatrix& lhs = paperMatrix_;
+  const Eigen::VectorXd& diagonal = paperDiagonal_;
   Points direction = Points::Zero(position_.rows(), 3);
   const LinearOperator op = [&](const Eigen::VectorXd& in, Eigen::VectorXd& out) {
     direction.setZero();
@@ -397,11 +398,11 @@ StaticReport Simulator::solveStatic(double tolerance, int maxNewtonIterations) {
     return report;
   }
   // Scale of the loads: the external gradient at the start.
-  prepareForms(position_, false);
   double scale = 0;
   {
     model_.nodesFromControl(position_, scratchNodes_);
     const FormState state{position_, scratchNodes_};
+    for (auto& load : loads_) load->prepare(state);
     FormGradient g;
     g.setZero(position_.rows(), scratchNodes_.rows());
     for (auto& load : loads_) load->addGradient(state, g);
@@ -424,8 +425,7 @@ StaticReport Simulator::solveStatic(double tolerance, int maxNewtonIterations) {
     preconditioner_->apply(r, z);
   };
   for (int it = 0; it < maxNewtonIterations; ++it) {
-    prepareForms(position_, false);
-    const Points g = totalGradient(position_, false);
+    const Points g = prepareAndGradient(position_, false);
     report.residual = g.norm() / scale;
     if (!std::isfinite(report.residual)) {
       report.message = "the solve produced non-finite forces";
@@ -449,14 +449,12 @@ StaticReport Simulator::solveStatic(double tolerance, int maxNewtonIterations) {
     // with Young's modulus) and more iterations cannot reduce it.
     const double displacement = (position_ - model_.restControl()).cwiseAbs().maxCoeff();
     if (dx.cwiseAbs().maxCoeff() <= 1e-10 * displacement) {
-      prepareForms(position_, false);
-      report.residual = totalGradient(position_, false).norm() / scale;
+      report.residual = prepareAndGradient(position_, false).norm() / scale;
       report.converged = std::isfinite(report.residual);
       return report;
     }
   }
-  prepareForms(position_, false);
-  report.residual = totalGradient(position_, false).norm() / scale;
+  report.residual = prepareAndGradient(position_, false).norm() / scale;
   report.converged = report.residual <= tolerance;
   if (!report.converged)
     report.message = "no equilibrium within " + std::to_string(maxNewtonIterations) +

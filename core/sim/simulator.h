@@ -105,10 +105,10 @@ class Simulator {
   Attempt checkState(const Points& start, double loadEnergyBefore);
   bool finiteForces(const Points& gradient, Attempt& attempt) const;
 
-  // The forms in the current system and their summed gradient / Hessian product, folded onto
-  // the control points with fixed rows zeroed.
-  void prepareForms(const Points& x, bool withInertia);
-  Points totalGradient(const Points& x, bool withInertia);
+  // The forms in the current system: prepared at x (rotations, contact sets) with their summed
+  // gradient, or their Hessian product at the prepared state; folded onto the control points
+  // with fixed rows zeroed.
+  Points prepareAndGradient(const Points& x, bool withInertia);
   Points hessianProduct(const Points& dx, bool withInertia);
   void zeroFixed(Points& x) const;
   double systemLoadEnergy(const Points& x);
@@ -132,6 +132,10 @@ class Simulator {
   double energyFloor_ = 0;
   double extent_ = 1;  // diagonal of the rest bounding box
   Points scratchNodes_, scratchNodeDirection_;
+  SparseMatrix paperMatrix_;  // 2M~ + h D~ of the paper's scheme, for paperMatrixStep_
+  Eigen::VectorXd paperDiagonal_;
+  double paperMatrixStep_ = 0;
+  uint64_t paperMatrixVersion_ = ~uint64_t(0);
 };
 
 }  // namespace sculpt

@@ -53,16 +53,21 @@ void DampingForm::addHessianProduct(const FormState&, const FormState& dx,
   r.control += applyScalarMatrix(model_.reducedDamping(), dx.control) / h_;
 }
 
-double GravityForm::energy(const FormState& x) const {
-  const Points Mp = applyScalarMatrix(model_.reducedMass(), x.control);
-  return -(Mp * g_).sum();
+const Eigen::VectorXd& GravityForm::weights() const {
+  // M~ 1: the mass each control point carries (rows of M~ summed); refreshed with the materials.
+  if (weightsVersion_ != model_.materialVersion() || weights_.size() == 0) {
+    weights_ = model_.reducedMass() * Eigen::VectorXd::Ones(model_.numControlPoints());
+    weightsVersion_ = model_.materialVersion();
+  }
+  return weights_;
 }
 
-void GravityForm::addGradient(const FormState& x, FormGradient& g) const {
-  // d/dp of -(g^T p^T M~ 1)... the weight vector M~ 1 g^T is constant.
-  const Eigen::VectorXd lumped =
-      model_.reducedMass() * Eigen::VectorXd::Ones(x.control.rows());
-  g.control -= lumped * g_.transpose();
+double GravityForm::energy(const FormState& x) const {
+  return -weights().dot(x.control * g_);
+}
+
+void GravityForm::addGradient(const FormState&, FormGradient& g) const {
+  g.control -= weights() * g_.transpose();
 }
 
 }  // namespace sculpt

@@ -65,8 +65,11 @@ class GravityForm : public Form {
   void addHessianProduct(const FormState&, const FormState&, FormGradient&) const override {}
 
  private:
+  const Eigen::VectorXd& weights() const;
   const FemModel& model_;
   Eigen::Vector3d g_;
+  mutable Eigen::VectorXd weights_;
+  mutable uint64_t weightsVersion_ = 0;
 };
 
 /// Scalar matrix S applied to each coordinate column of an N by 3 array.
