@@ -32,6 +32,13 @@ double tricubicElementKernel(const double* u, const TricubicPacked& element,
                              const Eigen::Matrix3d& R, bool withRestTerm, bool withEnergy,
                              double* gradient) {
   const Tables& T = tables();
+  // Work in the element frame: u' = R^T u, so the strain needs no rotation per Gauss point;
+  // the node forces are rotated back at the end.
+  alignas(32) double ul[192];
+  for (int n = 0; n < 64; ++n)
+    for (int r = 0; r < 3; ++r)
+      ul[n * 3 + r] = R(0, r) * u[n * 3] + R(1, r) * u[n * 3 + 1] + R(2, r) * u[n * 3 + 2];
+  u = ul;
   // Stage A: contract a (the slowest index). QB[i][bgc], QD[i][bgc], bgc = b*12 + g*3 + c.
   alignas(32) double QB[4][48], QD[4][48];
   for (int i = 0; i < 4; ++i) {
@@ -70,9 +77,6 @@ double tricubicElementKernel(const double* u, const TricubicPacked& element,
   for (int r = 0; r < 3; ++r)
     for (int s = 0; s < 3; ++s)
       E0[r][s] = withRestTerm ? 0.5 * (R(r, s) + R(s, r)) - (r == s ? 1.0 : 0.0) : 0.0;
-  double Rm[3][3];
-  for (int r = 0; r < 3; ++r)
-    for (int s = 0; s < 3; ++s) Rm[r][s] = R(r, s);
 
   using V4 = Eigen::Array4d;  // four Gauss points along w
   V4 BT[4], DT[4];
@@ -102,13 +106,11 @@ double tricubicElementKernel(const double* u, const TricubicPacked& element,
         J[r][col] = Eigen::Map<const V4>(element.inverseJacobian + ij * 36 + (r * 3 + col) * 4);
     const V4 vl = Eigen::Map<const V4>(element.volumeLambda + ij * 4);
     const V4 vm = Eigen::Map<const V4>(element.volumeMu + ij * 4);
-    // Rotated parametric gradient L = R^T G, then M = L Jinv = R^T F.
-    V4 L[3][3], M[3][3];
-    for (int r = 0; r < 3; ++r)
-      for (int m = 0; m < 3; ++m) L[r][m] = Rm[0][r] * G[0][m] + Rm[1][r] * G[1][m] + Rm[2][r] * G[2][m];
+    // M = G Jinv = R^T F (G is already in the element frame).
+    V4 M[3][3];
     for (int r = 0; r < 3; ++r)
       for (int col = 0; col < 3; ++col)
-        M[r][col] = L[r][0] * J[0][col] + L[r][1] * J[1][col] + L[r][2] * J[2][col];
+        M[r][col] = G[r][0] * J[0][col] + G[r][1] * J[1][col] + G[r][2] * J[2][col];
     V4 e[3][3];
     for (int r = 0; r < 3; ++r)
       for (int s = r; s < 3; ++s) e[r][s] = 0.5 * (M[r][s] + M[s][r]) + E0[r][s];
@@ -126,18 +128,11 @@ double tricubicElementKernel(const double* u, const TricubicPacked& element,
       energyLanes += vm * ee + 0.5 * vl * trace * trace;
     }
     if (!gradient) continue;
-    // Local H' = S Jinv^T, then H = R H'.
-    V4 Hl[3][3];
-    for (int r = 0; r < 3; ++r)
-      for (int m = 0; m < 3; ++m)
-        Hl[r][m] = S[r][0] * J[m][0] + S[r][1] * J[m][1] + S[r][2] * J[m][2];
+    // H = S Jinv^T, in the element frame.
     for (int c = 0; c < 3; ++c) {
-      const V4 hu = Rm[c][0] * Hl[0][0] + Rm[c][1] * Hl[1][0] + Rm[c][2] * Hl[2][0];
-      const V4 hv = Rm[c][0] * Hl[0][1] + Rm[c][1] * Hl[1][1] + Rm[c][2] * Hl[2][1];
-      const V4 hw = Rm[c][0] * Hl[0][2] + Rm[c][1] * Hl[1][2] + Rm[c][2] * Hl[2][2];
-      Eigen::Map<V4>{HU[ij][c]} = hu;
-      Eigen::Map<V4>{HV[ij][c]} = hv;
-      Eigen::Map<V4>{HW[ij][c]} = hw;
+      Eigen::Map<V4>{HU[ij][c]} = S[c][0] * J[0][0] + S[c][1] * J[0][1] + S[c][2] * J[0][2];
+      Eigen::Map<V4>{HV[ij][c]} = S[c][0] * J[1][0] + S[c][1] * J[1][1] + S[c][2] * J[1][2];
+      Eigen::Map<V4>{HW[ij][c]} = S[c][0] * J[2][0] + S[c][1] * J[2][1] + S[c][2] * J[2][2];
     }
   }
   energy = energyLanes.sum();
@@ -180,7 +175,8 @@ double tricubicElementKernel(const double* u, const TricubicPacked& element,
       }
     }
   }
-  // Transposed stage A: back to a, added to the gradient in node order (g*3 + c).
+  // Transposed stage A: back to a, rotated back to the world frame and added to the gradient
+  // in node order (g*3 + c).
   for (int a = 0; a < 4; ++a) {
     alignas(32) double sum[48];
     for (int n = 0; n < 48; ++n) sum[n] = 0;
@@ -190,8 +186,11 @@ double tricubicElementKernel(const double* u, const TricubicPacked& element,
     }
     double* out = gradient + a * 48;
     for (int b = 0; b < 4; ++b)
-      for (int c = 0; c < 3; ++c)
-        for (int g = 0; g < 4; ++g) out[b * 12 + g * 3 + c] += sum[b * 12 + c * 4 + g];
+      for (int g = 0; g < 4; ++g) {
+        const double l0 = sum[b * 12 + g], l1 = sum[b * 12 + 4 + g], l2 = sum[b * 12 + 8 + g];
+        for (int c = 0; c < 3; ++c)
+          out[b * 12 + g * 3 + c] += R(c, 0) * l0 + R(c, 1) * l1 + R(c, 2) * l2;
+      }
   }
   return energy;
 }

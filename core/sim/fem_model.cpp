@@ -83,18 +83,26 @@ long FemModel::paintMaterial(const Eigen::Vector3d& centre, double radius,
     return -1;
   }
   long changed = 0;
+  bool massChanged = false, stiffnessChanged = false;
   const double r2 = std::isinf(radius) ? radius : radius * radius;
   for (uint32_t q = 0; q < mesh_->numGaussPoints(); ++q) {
     if ((mesh_->gaussRestPosition[q] - centre).squaredNorm() > r2) continue;
-    mesh_->gaussMaterial[q] = material;
+    Material& sample = mesh_->gaussMaterial[q];
+    massChanged |= sample.density != material.density || sample.damping != material.damping;
+    stiffnessChanged |= sample.youngs != material.youngs || sample.poisson != material.poisson;
+    sample = material;
     mesh_->gaussLame[q] = lameParameters(material);
     ++changed;
   }
-  if (changed > 0) {
-    elastic_->refreshMaterial();
+  // Only what depends on the changed fields is refreshed: the elastic kernel's packed moduli
+  // for E and nu (the stiffness is matrix-free), the mass and damping matrices for density and
+  // damping (lazily, on next use).
+  if (stiffnessChanged) elastic_->refreshMaterial();
+  if (massChanged) {
     matricesStale_ = true;
-    ++materialVersion_;
+    ++massVersion_;
   }
+  if (massChanged || stiffnessChanged) ++materialVersion_;
   return changed;
 }
 

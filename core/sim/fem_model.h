@@ -59,6 +59,8 @@ class FemModel {
                      std::string* error = nullptr);
   /// Bumped by every material change (lets solvers know their factorisations are stale).
   uint64_t materialVersion() const { return materialVersion_; }
+  /// Bumped only when density or damping change (M~ and D~ then change).
+  uint64_t massVersion() const { return massVersion_; }
 
  private:
   FemModel() = default;
@@ -70,6 +72,7 @@ class FemModel {
   mutable SparseMatrix reducedMass_, reducedDamping_;
   mutable bool matricesStale_ = true;
   uint64_t materialVersion_ = 0;
+  uint64_t massVersion_ = 0;
   void refreshMatrices() const;
 };
 

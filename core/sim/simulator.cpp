@@ -293,12 +293,12 @@ Simulator::Attempt Simulator::paperSubstep(double h) {
   zeroFixed(rhs);
   const Eigen::VectorXd b = gather(rhs, freeDofs_);
   // 2M~ + h D~ changes only with the step and the materials.
-  if (paperMatrixStep_ != h || paperMatrixVersion_ != model_.materialVersion() ||
+  if (paperMatrixStep_ != h || paperMatrixVersion_ != model_.massVersion() ||
       paperMatrix_.rows() == 0) {
     paperMatrix_ = 2.0 * M + h * D;
     paperDiagonal_ = paperMatrix_.diagonal();
     paperMatrixStep_ = h;
-    paperMatrixVersion_ = model_.materialVersion();
+    paperMatrixVersion_ = model_.massVersion();
   }
   const SparseMatrix& lhs = paperMatrix_;
   const Eigen::VectorXd& diagonal = paperDiagonal_;

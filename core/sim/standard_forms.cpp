@@ -55,9 +55,9 @@ void DampingForm::addHessianProduct(const FormState&, const FormState& dx,
 
 const Eigen::VectorXd& GravityForm::weights() const {
   // M~ 1: the mass each control point carries (rows of M~ summed); refreshed with the materials.
-  if (weightsVersion_ != model_.materialVersion() || weights_.size() == 0) {
+  if (weightsVersion_ != model_.massVersion() || weights_.size() == 0) {
     weights_ = model_.reducedMass() * Eigen::VectorXd::Ones(model_.numControlPoints());
-    weightsVersion_ = model_.materialVersion();
+    weightsVersion_ = model_.massVersion();
   }
   return weights_;
 }

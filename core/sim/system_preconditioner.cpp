@@ -7,9 +7,15 @@ namespace sculpt {
 bool SystemPreconditioner::update(const FemModel& model, double massScale, double dampingScale,
                                   double stiffnessScale, const std::vector<int>& freeDofs) {
   const uint64_t version = model.materialVersion();
-  if (scales_[0] == massScale && scales_[1] == dampingScale && scales_[2] == stiffnessScale &&
-      materialVersion_ == version && freeDofs_ == freeDofs)
+  const bool sameSystem = scales_[0] == massScale && scales_[1] == dampingScale &&
+                          scales_[2] == stiffnessScale && freeDofs_ == freeDofs;
+  ++solvesSinceRefresh_;
+  // Painting changes the materials many times per second. A preconditioner a few strokes old
+  // costs a few CG iterations, not accuracy, so material changes refactor at most every
+  // kMaterialRefreshInterval solves.
+  if (sameSystem && (materialVersion_ == version || solvesSinceRefresh_ < kMaterialRefreshInterval))
     return valid_;
+  solvesSinceRefresh_ = 0;
   if (stiffnessVersion_ != version || stiffness_.rows() == 0) {
     stiffness_ = reducedLinearStiffness(model);
     stiffnessVersion_ = version;

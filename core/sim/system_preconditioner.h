@@ -1,7 +1,7 @@
 #pragma once
 // Cholesky factor of S = a M~ + b D~ + c K~lin on the free coordinates, the preconditioner of
-// the implicit and static solves. Refactored only when a, b, c, the materials or the set of
-// free coordinates change.
+// the implicit and static solves. Refactored when a, b, c or the set of free coordinates
+// change, and (at most every few solves) after material edits.
 
 #include <Eigen/SparseCholesky>
 #include <vector>
@@ -27,6 +27,8 @@ class SystemPreconditioner {
   std::vector<int> freeDofs_;
   SparseMatrix stiffness_;  // K~lin, rebuilt with the materials
   uint64_t stiffnessVersion_ = ~uint64_t(0);
+  int solvesSinceRefresh_ = 0;
+  static constexpr int kMaterialRefreshInterval = 8;
 };
 
 }  // namespace sculpt
