@@ -4,9 +4,11 @@
 #   scripts/run.sh [CONTROL.json]      (default: assets/block3.json)
 #
 # The window (`sculpt`) does not exist yet. Until it does, this builds `sculpt-cli`, prints
-# `sculpt-cli info` of the model at level 2 and writes its level-2 subdivision to out/:
+# `sculpt-cli info` of the model at level 2, writes its level-2 subdivision to out/ and
+# simulates one second of it sagging under gravity:
 #   out/<name>_level2.vtk            the level-2 cell complex (open it in ParaView)
 #   out/<name>_level2_boundary.obj   its boundary surface
+#   out/<name>_sag.vtk               the deformed control mesh with its displacement field
 set -euo pipefail
 
 ROOT="$(cd "$(dirname "${BASH_SOURCE[0]}")/.." && pwd)"
@@ -56,6 +58,13 @@ echo
 echo "\$ $BUILD_DIR/bin/sculpt-cli subdivide $ASSET --levels $LEVELS --out $VTK --boundary $OBJ"
 "$CLI" subdivide "$ASSET" --levels "$LEVELS" --out "$VTK" --boundary "$OBJ"
 echo
+# One second of the solid sagging under gravity (y up), its lowest layer of control points held.
+SIM="out/${NAME}_sag.vtk"
+FIX="$(python3 -c 'import json,sys; y=min(v[1] for v in json.load(open(sys.argv[1]))["vertices"]); print(f"-1e9,{y-1e-6},-1e9,1e9,{y+1e-6},1e9")' "$ASSET")"
+echo "\$ $BUILD_DIR/bin/sculpt-cli simulate $ASSET --levels $LEVELS --gravity --E 2e5 --fix=$FIX --dt 0.02 --steps 50 --out $SIM"
+"$CLI" simulate "$ASSET" --levels "$LEVELS" --gravity --E 2e5 --fix="$FIX" --dt 0.02 --steps 50 --out "$SIM"
+echo
 echo "wrote:"
 echo "  $ROOT/$VTK   (level-$LEVELS cell complex, legacy VTK: open it in ParaView)"
 echo "  $ROOT/$OBJ   (its boundary surface, OBJ)"
+echo "  $ROOT/$SIM   (the control mesh after 1 s under gravity, with its displacement field)"

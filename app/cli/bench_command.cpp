@@ -1,10 +1,14 @@
 // sculpt-cli bench subdivide CONTROL --levels K [--repeat N]: the cost of refinement (the
 // precomputation) and of one application of the stencils (the per-frame work).
+// sculpt-cli bench fem CONTROL --levels K [--integrator paper|implicit] [--steps N]: the cost of
+// one simulation step under gravity.
 
 #include <algorithm>
 #include <chrono>
 #include <cstdio>
 #include <iostream>
+#include <iterator>
+#include <limits>
 #include <optional>
 #include <string>
 #include <vector>
@@ -12,7 +16,9 @@
 #include "cli/cli_args.h"
 #include "cli/cli_common.h"
 #include "cli/commands.h"
+#include "cli/fem_options.h"
 #include "mesh/topology.h"
+#include "sim/standard_forms.h"
 #include "subdiv/mj_refiner.h"
 #include "util/parallel_for.h"
 
@@ -22,12 +28,33 @@ const char* const kBenchUsage =
     "  bench subdivide CONTROL.json --levels K [--repeat N]\n"
     "      Times subdivide() (median of N runs, default 5) and one application of the level-K\n"
     "      stencils to the control points (median of 51 runs). The last line is\n"
-    "      subdivide_ms=<x> apply_ms=<y> cells=<level-K cells> vertices=<level-K vertices>.\n";
+    "      subdivide_ms=<x> apply_ms=<y> cells=<level-K cells> vertices=<level-K vertices>.\n"
+    "  bench fem CONTROL.json (--levels K | --trilinear) [--integrator paper|implicit]\n"
+    "            [--steps N] [--dt S] [other FEM options]\n"
+    "      Times Simulator::step() under gravity (0, -9.81, 0; y up) and any --force: the\n"
+    "      median of N steps (default 100; integrator implicit, dt 1/60 s) after 3 untimed\n"
+    "      warm-up steps. Without --fix the control points of the lowest layer (least rest y)\n"
+    "      are fixed. Prints the model setup time, threads, control points and nodes; the last\n"
+    "      line is fem_step_ms=<median> elements=<n> tricubic=<n> trilinear=<n> pyramid=<n>\n"
+    "      cg_iterations=<mean per timed step>. Exit 1 when a step fails.\n";
 
 namespace {
 
+// Options of bench subdivide; bench fem takes these, the FEM options and its own.
 constexpr OptionSpec kOptions[] = {{"levels", true}, {"repeat", true}, {"help", false}};
+constexpr OptionSpec kFemBenchOptions[] = {{"integrator", true}, {"steps", true}, {"dt", true}};
+
+// Every option of either benchmark.
+std::vector<OptionSpec> allOptions() {
+  std::vector<OptionSpec> specs(std::begin(kOptions), std::end(kOptions));
+  for (const OptionSpec& spec : kFemOptions)
+    if (spec.name != "levels") specs.push_back(spec);
+  specs.insert(specs.end(), std::begin(kFemBenchOptions), std::end(kFemBenchOptions));
+  return specs;
+}
+
 constexpr int kApplyRuns = 51;
+constexpr int kWarmupSteps = 3;
 
 using Clock = std::chrono::steady_clock;
 
@@ -113,22 +140,142 @@ int benchSubdivide(const CliArgs& args, std::string& file) {
   return kExitSuccess;
 }
 
+// Fixes the control points whose rest y is the least (the bottom layer); returns how many.
+uint32_t fixLowestLayer(Simulator& simulator) {
+  const Points& rest = simulator.model().restControl();
+  const double low = rest.col(1).minCoeff();
+  const double extent = (rest.colwise().maxCoeff() - rest.colwise().minCoeff()).maxCoeff();
+  const double tolerance = 1e-9 * std::max(extent, 1.0);
+  const double inf = std::numeric_limits<double>::infinity();
+  return simulator.fixInBox(Eigen::AlignedBox3d(Eigen::Vector3d(-inf, low - tolerance, -inf),
+                                                Eigen::Vector3d(inf, low + tolerance, inf)));
+}
+
+int benchFem(const CliArgs& args, std::string& file) {
+  if (args.positional().size() != 2) {
+    throw UsageError("bench fem needs exactly one CONTROL file (see --help)");
+  }
+  if (args.has("repeat"))
+    throw UsageError("--repeat applies to bench subdivide only (use --steps)");
+  if (!args.has("levels") && !args.has("trilinear"))
+    throw UsageError("--levels is required (or --trilinear)");
+  const std::string control = args.positional()[1];
+  const FemCommandOptions options = parseFemOptions(args);
+  SimulationSettings settings;
+  if (auto name = args.value("integrator")) {
+    const auto integrator = parseIntegrator(*name);
+    if (!integrator)
+      throw UsageError("--integrator must be paper or implicit, got '" + *name + "'");
+    settings.integrator = *integrator;
+  }
+  if (auto dt = args.value("dt")) {
+    settings.timeStep = parseNumber(*dt, "dt");
+    if (!(settings.timeStep > 0) || settings.timeStep > 10)
+      throw UsageError("--dt must be above 0 and at most 10 s, got '" + *dt + "'");
+  }
+  const int steps = args.intValue("steps", 100, 1, 1'000'000);
+
+  file = control;
+  const std::optional<LoadedMesh> loaded = loadValidControlMesh(control);
+  if (!loaded) return kExitBadInput;
+  const CellComplex& mesh = loaded->mesh;
+  if (!options.setup.trilinear) {
+    const uint64_t estimate = estimateRefinedCells(buildTopology(mesh), options.setup.level);
+    if (estimate > kMaxEstimatedCells) {
+      return printError(control + ": level " + std::to_string(options.setup.level) +
+                        " would have about " + std::to_string(estimate) + " cells (more than " +
+                        std::to_string(kMaxEstimatedCells) + "); use fewer levels");
+    }
+  }
+  std::cout << "file=" << control << " control_cells=" << mesh.numCells()
+            << " control_vertices=" << mesh.numVertices() << '\n';
+  std::cout.flush();
+
+  const Clock::time_point setupStart = Clock::now();
+  std::optional<FemModel> model = buildFemModel(mesh, options.setup, control);
+  if (!model) return kExitBadInput;
+  const double setupMs = millisecondsSince(setupStart);
+
+  Simulator simulator(*model);
+  if (const std::string problem = simulator.setSettings(settings); !problem.empty())
+    throw UsageError(problem);
+  applyConstraintsAndForces(simulator, options);
+  const uint32_t fixed =
+      options.fixed.empty()
+          ? fixLowestLayer(simulator)
+          : static_cast<uint32_t>(
+                std::count(simulator.fixedMask().begin(), simulator.fixedMask().end(), uint8_t{1}));
+  simulator.addLoad(std::make_unique<GravityForm>(*model, Eigen::Vector3d(0.0, -9.81, 0.0)));
+
+  const ElementCounts counts = model->mesh().counts();
+  std::cout << "threads=" << workerCount() << " levels="
+            << (options.setup.trilinear ? std::string("trilinear")
+                                        : std::to_string(options.setup.level))
+            << " integrator=" << integratorName(settings.integrator) << " dt=" << settings.timeStep
+            << " steps=" << steps << " warmup=" << kWarmupSteps << '\n'
+            << "setup_ms=" << ms(setupMs) << " control_points=" << model->numControlPoints()
+            << " nodes=" << model->numNodes() << " fixed=" << fixed << '\n';
+  std::cout.flush();
+
+  int failures = 0;
+  auto step = [&] {
+    const StepReport report = simulator.step();
+    if (!report.ok || !report.message.empty()) {
+      if (failures == 0) std::cerr << "bench fem: " << report.message << '\n';
+      ++failures;
+    }
+    return report;
+  };
+  for (int i = 0; i < kWarmupSteps; ++i) step();
+  std::vector<double> samples;
+  long long iterations = 0;
+  bool failed = false;
+  for (int i = 0; i < steps; ++i) {
+    const Clock::time_point start = Clock::now();
+    const StepReport report = step();
+    samples.push_back(millisecondsSince(start));
+    iterations += report.iterations;
+    failed = failed || !report.ok;
+  }
+  if (failures > 1)
+    std::cerr << "bench fem: " << failures << " of " << kWarmupSteps + steps
+              << " steps needed sub-steps or failed\n";
+
+  char mean[32];
+  std::snprintf(mean, sizeof mean, "%.1f", static_cast<double>(iterations) / steps);
+  std::cout << "fem_step_ms=" << ms(median(std::move(samples))) << " elements=" << counts.total()
+            << " tricubic=" << counts.tricubic << " trilinear=" << counts.trilinear
+            << " pyramid=" << counts.pyramid << " cg_iterations=" << mean << '\n';
+  return failed ? 1 : kExitSuccess;
+}
+
 int bench(const CliArgs& args, std::string& file) {
   if (args.has("help")) {
-    std::cout << "usage:\n" << kBenchUsage;
+    std::cout << "usage:\n"
+              << kBenchUsage << "      FEM options (bench fem requires --levels or --trilinear):\n"
+              << kFemOptionsUsage;
     return kExitSuccess;
   }
-  if (args.positional().empty()) throw UsageError("bench needs a benchmark name (subdivide)");
+  if (args.positional().empty())
+    throw UsageError("bench needs a benchmark name (subdivide or fem)");
   const std::string& name = args.positional()[0];
-  if (name == "subdivide") return benchSubdivide(args, file);
-  throw UsageError("unknown benchmark '" + name + "' (expected subdivide)");
+  if (name == "fem") return benchFem(args, file);
+  if (name == "subdivide") {
+    for (const OptionSpec& spec : allOptions()) {
+      if (args.has(spec.name) && spec.name != "levels" && spec.name != "repeat" &&
+          spec.name != "help")
+        throw UsageError("--" + std::string(spec.name) + " applies to bench fem only");
+    }
+    return benchSubdivide(args, file);
+  }
+  throw UsageError("unknown benchmark '" + name + "' (expected subdivide or fem)");
 }
 
 }  // namespace
 
 int runBenchCommand(const std::vector<std::string>& args) {
   std::string file;
-  return runGuarded(file, [&] { return bench(CliArgs::parse(args, kOptions), file); });
+  return runGuarded(file, [&] { return bench(CliArgs::parse(args, allOptions()), file); });
 }
 
 }  // namespace sculpt::cli

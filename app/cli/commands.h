@@ -10,11 +10,13 @@ int runInfoCommand(const std::vector<std::string>& args);
 int runSubdivideCommand(const std::vector<std::string>& args);
 int runBenchCommand(const std::vector<std::string>& args);
 int runStaticCommand(const std::vector<std::string>& args);
+int runSimulateCommand(const std::vector<std::string>& args);
 
 /// One-paragraph usage of each subcommand (shown by `--help` and in the main usage).
 extern const char* const kInfoUsage;
 extern const char* const kSubdivideUsage;
 extern const char* const kBenchUsage;
 extern const char* const kStaticUsage;
+extern const char* const kSimulateUsage;
 
 }  // namespace sculpt::cli

@@ -18,9 +18,11 @@ void printUsage(std::ostream& out) {
       << sculpt::cli::kInfoUsage << '\n'
       << sculpt::cli::kSubdivideUsage << '\n'
       << sculpt::cli::kStaticUsage << '\n'
+      << sculpt::cli::kSimulateUsage << '\n'
       << sculpt::cli::kBenchUsage << '\n'
-      << "Run 'sculpt-cli <command> --help' for one command. Exit code 0 on success, 2 on bad\n"
-         "input or usage (with one line on stderr naming the file and the problem).\n";
+      << "Run 'sculpt-cli <command> --help' for one command. Exit code 0 on success, 1 when a\n"
+         "solve did not converge or a step failed (static, simulate, bench), 2 on bad input or\n"
+         "usage (with one line on stderr naming the file and the problem).\n";
 }
 
 int dispatch(const std::vector<std::string>& args) {
@@ -39,6 +41,7 @@ int dispatch(const std::vector<std::string>& args) {
   if (command == "subdivide") return runSubdivideCommand(rest);
   if (command == "bench") return runBenchCommand(rest);
   if (command == "static") return runStaticCommand(rest);
+  if (command == "simulate") return runSimulateCommand(rest);
   return printError("unknown command '" + command + "' (run 'sculpt-cli --help')");
 }
 

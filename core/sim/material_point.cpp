@@ -247,7 +247,7 @@ bool MaterialPointLocator::invert(uint32_t e, const Eigen::Vector3d& X,
   for (int iteration = 0; iteration < 30; ++iteration) {
     Eigen::Matrix3d J;
     const Eigen::Vector3d r = elementMap(mesh_, mesh_.restNodes, e, xi, &J) - X;
-    if (r.squaredNorm() <= 1e-6 * tolerance2) break;
+    if (r.squaredNorm() <= 1e-12 * tolerance2) break;
     const Eigen::Vector3d step = J.partialPivLu().solve(-r);
     if (!step.allFinite()) return false;
     xi += step;

@@ -3,6 +3,7 @@
 #include <algorithm>
 #include <cmath>
 #include <sstream>
+#include <stdexcept>
 
 #include "sim/conjugate_gradient.h"
 #include "sim/standard_forms.h"
@@ -44,7 +45,7 @@ std::optional<Integrator> parseIntegrator(const std::string& name) {
 
 Simulator::Simulator(FemModel& model, SimulationSettings settings)
     : model_(model),
-      settings_(settings),
+      settings_(validated(settings)),
       elastic_(std::make_unique<ElasticForm>(model, settings.corotated)),
       preconditioner_(std::make_unique<SystemPreconditioner>()) {
   const Eigen::Index n = model.numControlPoints();
@@ -63,13 +64,24 @@ Simulator::Simulator(FemModel& model, SimulationSettings settings)
 
 Simulator::~Simulator() = default;
 
-std::string Simulator::setSettings(const SimulationSettings& s) {
+std::string settingsProblem(const SimulationSettings& s) {
   if (!(s.timeStep > 0) || !std::isfinite(s.timeStep))
     return "time step " + formatNumber(s.timeStep) + " s must be positive and finite";
   if (!(s.paperTolerance > 0) || !(s.implicitTolerance > 0))
     return "solver tolerances must be positive";
   if (s.maxIterations < 1 || s.maxHalvings < 0 || s.maxHalvings > 30)
     return "iteration limits out of range";
+  return {};
+}
+
+const SimulationSettings& Simulator::validated(const SimulationSettings& s) {
+  if (const std::string problem = settingsProblem(s); !problem.empty())
+    throw std::invalid_argument("invalid simulation settings: " + problem);
+  return s;
+}
+
+std::string Simulator::setSettings(const SimulationSettings& s) {
+  if (std::string problem = settingsProblem(s); !problem.empty()) return problem;
   if (s.corotated != settings_.corotated)
     elastic_ = std::make_unique<ElasticForm>(model_, s.corotated);
   settings_ = s;
@@ -203,9 +215,12 @@ Simulator::Attempt Simulator::checkState(const Points& start, double loadEnergyB
   // factor 10 of slack for the paper scheme's energy oscillation). The elastic energy costs a
   // kernel pass, so it is measured only when something moved noticeably or the kinetic
   // energy alone already looks wrong.
+  // The work of conservative loads is the drop of their potential, signed: energy the body gives
+  // back to the loads (rising against gravity) leaves the budget again, so an oscillation
+  // cannot inflate it.
   const double loadEnergyAfter = systemLoadEnergy(position_);
-  const double work = std::abs(loadEnergyBefore - loadEnergyAfter);
-  energyBudget_ += std::isfinite(work) ? work : 0.0;
+  const double work = loadEnergyBefore - loadEnergyAfter;
+  if (std::isfinite(work)) energyBudget_ = std::max(0.0, energyBudget_ + work);
   const double limit = 10.0 * energyBudget_ + energyFloor_;
   double energy = kineticEnergy();
   const double moved = (position_ - start).cwiseAbs().maxCoeff();

@@ -57,8 +57,12 @@ struct StaticReport {
   std::string message;
 };
 
+/// Empty when the settings are usable; otherwise a sentence naming the bad one.
+std::string settingsProblem(const SimulationSettings& settings);
+
 class Simulator {
  public:
+  /// Throws std::invalid_argument when settingsProblem(settings) is not empty.
   explicit Simulator(FemModel& model, SimulationSettings settings = {});
   ~Simulator();
   Simulator(const Simulator&) = delete;
@@ -100,6 +104,7 @@ class Simulator {
     std::string failure;
     bool hopeless = false;  ///< smaller steps cannot help (non-finite inputs)
   };
+  static const SimulationSettings& validated(const SimulationSettings& settings);
   Attempt implicitSubstep(double h);
   Attempt paperSubstep(double h);
   Attempt checkState(const Points& start, double loadEnergyBefore);

@@ -50,11 +50,20 @@ void StencilTable::apply(const Points& src, Points& dst) const {
 
 void StencilTable::applyTranspose(const Points& src, Points& dst) const {
   assert(src.rows() == numRows());
-  // Scatter; serial because rows write to shared columns. Used off the per-frame path.
+  // A scatter (rows write to shared columns): each worker accumulates its chunk of rows into a
+  // buffer of its own, and the buffers are summed. This is on the FEM's per-step path (node
+  // forces onto control points), where #columns is much smaller than #rows.
+  std::vector<Points> partial(workerCount());
+  parallelChunks(numRows(), 4096, [&](uint32_t begin, uint32_t end, unsigned worker) {
+    Points& out = partial[worker];
+    out.setZero(numColumns_, 3);
+    for (uint32_t r = begin; r < end; ++r)
+      for (uint32_t k = offsets_[r]; k < offsets_[r + 1]; ++k)
+        out.row(indices_[k]) += weights_[k] * src.row(r);
+  });
   dst.setZero(numColumns_, 3);
-  for (uint32_t r = 0; r < numRows(); ++r)
-    for (uint32_t k = offsets_[r]; k < offsets_[r + 1]; ++k)
-      dst.row(indices_[k]) += weights_[k] * src.row(r);
+  for (const Points& out : partial)
+    if (out.rows() == dst.rows()) dst += out;
 }
 
 std::vector<double> StencilTable::rowSums() const {

@@ -147,7 +147,7 @@ TEST_F(CliTest, UsageAndBadUsage) {
                      " --boundary " + quote(path("b.ply")),
                  "unknown extension");
   expectBadInput("bench subdivide " + cube, "--levels is required");
-  expectBadInput("bench fem " + cube + " --levels 1", "unknown benchmark");
+  expectBadInput("bench frobnicate " + cube + " --levels 1", "unknown benchmark");
   EXPECT_FALSE(fs::exists(path("x.json")));
 }
 

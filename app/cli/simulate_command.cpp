@@ -1,0 +1,215 @@
+// sculpt-cli simulate CONTROL [--levels K | --trilinear] [--integrator paper|implicit] --dt S
+// --steps N [--gravity] [--fix BOX]... [--force BOX FX,FY,FZ]... --out FINAL.vtk: time
+// integration from rest under box forces and gravity.
+
+#include <chrono>
+#include <cmath>
+#include <cstdio>
+#include <iostream>
+#include <string>
+#include <vector>
+
+#include "cli/cli_args.h"
+#include "cli/cli_common.h"
+#include "cli/commands.h"
+#include "cli/fem_options.h"
+#include "io/vtk_writer.h"
+#include "sim/standard_forms.h"
+
+namespace sculpt::cli {
+
+const char* const kSimulateUsage =
+    "  simulate CONTROL.json [FEM options] [--integrator paper|implicit] --dt S --steps N\n"
+    "           [--gravity] --out FINAL.vtk\n"
+    "      Integrates N steps of S seconds from rest (0 < S <= 10, 1 <= N <= 10000000) with\n"
+    "      the paper's central differences or backward Euler (implicit, the default).\n"
+    "      --gravity adds g = (0, -9.81, 0) m/s^2: the y axis points up. A step that fails is\n"
+    "      retried with halved sub-steps; stderr gets a progress line about once per second\n"
+    "      ('[time] step i/N t=.. kinetic=.. elastic=..'), the first message of each kind of\n"
+    "      step report and a count per kind at the end. The run stops at the first step that\n"
+    "      fails even with sub-steps (exit 1) and keeps the state before it. FINAL.vtk is the\n"
+    "      deformed control mesh with the POINT_DATA vector 'displacement'. Last line:\n"
+    "      steps=<completed> time=<s> max_displacement=<m> kinetic_energy=<J>\n"
+    "      elastic_energy=<J> substeps=<total> cg_iterations=<mean per step>.\n";
+
+namespace {
+
+constexpr double kMaxTimeStep = 10.0;
+constexpr int kMaxSteps = 10'000'000;
+constexpr size_t kMaxMessageKinds = 10;
+const Eigen::Vector3d kGravity(0.0, -9.81, 0.0);
+
+using Clock = std::chrono::steady_clock;
+
+// The message with every number replaced by '#': reports that differ only in their figures
+// (energies, sub-step counts) are one kind.
+std::string messageKind(const std::string& message) {
+  std::string kind;
+  for (size_t i = 0; i < message.size();) {
+    const bool digit = message[i] >= '0' && message[i] <= '9';
+    if (!digit) {
+      kind += message[i++];
+      continue;
+    }
+    while (i < message.size()) {
+      const char c = message[i];
+      const bool exponent = (c == 'e' || c == 'E') && i + 1 < message.size() &&
+                            ((message[i + 1] >= '0' && message[i + 1] <= '9') ||
+                             message[i + 1] == '-' || message[i + 1] == '+');
+      if ((c >= '0' && c <= '9') || c == '.') {
+        ++i;
+      } else if (exponent) {
+        i += 2;
+      } else {
+        break;
+      }
+    }
+    kind += '#';
+  }
+  return kind;
+}
+
+struct MessageKind {
+  std::string kind;
+  int firstStep = 0;
+  long count = 0;
+};
+
+// Prints the first message of each kind as it comes and the counts at the end.
+class StepMessages {
+ public:
+  void add(int step, const std::string& message) {
+    const std::string kind = messageKind(message);
+    for (MessageKind& k : kinds_) {
+      if (k.kind == kind) {
+        ++k.count;
+        return;
+      }
+    }
+    if (kinds_.size() == kMaxMessageKinds) {
+      if (suppressed_++ == 0)
+        std::cerr << "simulate: more kinds of step messages; further ones are only counted\n";
+      return;
+    }
+    kinds_.push_back({kind, step, 1});
+    std::cerr << "simulate: step " << step << ": " << message << '\n';
+  }
+  // A count for each kind that came more than once.
+  void printSummary(int stepsRun) const {
+    for (const MessageKind& k : kinds_)
+      if (k.count > 1)
+        std::cerr << "simulate: " << k.count << " of " << stepsRun
+                  << " steps reported a message like step " << k.firstStep << "'s\n";
+    if (suppressed_ > 0)
+      std::cerr << "simulate: " << suppressed_ << " more steps reported other messages\n";
+  }
+
+ private:
+  std::vector<MessageKind> kinds_;
+  long suppressed_ = 0;
+};
+
+int simulateCommand(const CliArgs& args, std::string& file) {
+  if (args.has("help")) {
+    std::cout << "usage:\n" << kSimulateUsage << kFemOptionsUsage;
+    return kExitSuccess;
+  }
+  if (args.positional().size() != 1)
+    throw UsageError("simulate needs exactly one CONTROL file (see --help)");
+  const FemCommandOptions options = parseFemOptions(args);
+  SimulationSettings settings;
+  if (auto name = args.value("integrator")) {
+    const auto integrator = parseIntegrator(*name);
+    if (!integrator)
+      throw UsageError("--integrator must be paper or implicit, got '" + *name + "'");
+    settings.integrator = *integrator;
+  }
+  settings.timeStep = parseNumber(args.requiredValue("dt"), "dt");
+  if (!(settings.timeStep > 0) || settings.timeStep > kMaxTimeStep)
+    throw UsageError("--dt must be above 0 and at most 10 s, got '" + *args.value("dt") + "'");
+  if (!args.has("steps")) throw UsageError("--steps is required");
+  const int steps = args.intValue("steps", 0, 1, kMaxSteps);
+  const std::string out = args.requiredValue("out");
+  if (lowerExtension(out) != ".vtk")
+    throw UsageError("--out " + out + ": unknown extension (expected .vtk)");
+
+  file = args.positional()[0];
+  const std::optional<LoadedMesh> loaded = loadValidControlMesh(file);
+  if (!loaded) return kExitBadInput;
+  std::optional<FemModel> model = buildFemModel(loaded->mesh, options.setup, file);
+  if (!model) return kExitBadInput;
+
+  Simulator simulator(*model);
+  if (const std::string problem = simulator.setSettings(settings); !problem.empty())
+    throw UsageError(problem);
+  applyConstraintsAndForces(simulator, options);
+  if (args.has("gravity")) simulator.addLoad(std::make_unique<GravityForm>(*model, kGravity));
+
+  const Clock::time_point start = Clock::now();
+  Clock::time_point lastProgress = start;
+  StepMessages messages;
+  int completed = 0;
+  long long substeps = 0;
+  long long iterations = 0;
+  bool failed = false;
+  for (int i = 1; i <= steps; ++i) {
+    const StepReport report = simulator.step();
+    iterations += report.iterations;
+    if (report.ok) {
+      ++completed;
+      substeps += report.substeps;
+    }
+    if (!report.message.empty() || !report.ok)
+      messages.add(i, report.message.empty() ? "step failed" : report.message);
+    if (!report.ok) {
+      failed = true;
+      std::cerr << "simulate: stopped at step " << i << " of " << steps << "; " << out
+                << " holds the state before it\n";
+      break;
+    }
+    const Clock::time_point now = Clock::now();
+    if (now - lastProgress >= std::chrono::seconds(1) && i < steps) {
+      lastProgress = now;
+      char line[160];
+      std::snprintf(line, sizeof line,
+                    "[%7.2f s] step %d/%d t=%.6g s kinetic=%.4g J elastic=%.4g J",
+                    std::chrono::duration<double>(now - start).count(), i, steps, simulator.time(),
+                    simulator.kineticEnergy(), simulator.elasticEnergy());
+      std::cerr << line << '\n';
+    }
+  }
+  const int stepsRun = completed + (failed ? 1 : 0);
+  messages.printSummary(stepsRun);
+
+  const CellComplex& control = model->control();
+  CellComplex deformed = control;
+  deformed.positions = simulator.positions();
+  const Points displacement = simulator.positions() - control.positions;
+  const VtkPointVectors field{"displacement", &displacement};
+  writeVtk(deformed, model->subdivision().topologies.front(), out, {&field, 1});
+  std::printf(
+      "steps=%d time=%.9g max_displacement=%.9g kinetic_energy=%.9g elastic_energy=%.9g "
+      "substeps=%lld cg_iterations=%.1f\n",
+      completed, simulator.time(), maxNodeDisplacement(*model, simulator.positions()),
+      simulator.kineticEnergy(), simulator.elasticEnergy(), substeps,
+      static_cast<double>(iterations) / stepsRun);
+  return failed ? 1 : kExitSuccess;
+}
+
+}  // namespace
+
+int runSimulateCommand(const std::vector<std::string>& args) {
+  std::string file;
+  return runGuarded(file, [&] {
+    std::vector<OptionSpec> specs = kFemOptions;
+    specs.insert(specs.end(), {{"integrator", true},
+                               {"dt", true},
+                               {"steps", true},
+                               {"gravity", false},
+                               {"out", true},
+                               {"help", false}});
+    return simulateCommand(CliArgs::parse(args, specs), file);
+  });
+}
+
+}  // namespace sculpt::cli
