@@ -161,18 +161,7 @@ int benchFem(const CliArgs& args, std::string& file) {
     throw UsageError("--levels is required (or --trilinear)");
   const std::string control = args.positional()[1];
   const FemCommandOptions options = parseFemOptions(args);
-  SimulationSettings settings;
-  if (auto name = args.value("integrator")) {
-    const auto integrator = parseIntegrator(*name);
-    if (!integrator)
-      throw UsageError("--integrator must be paper or implicit, got '" + *name + "'");
-    settings.integrator = *integrator;
-  }
-  if (auto dt = args.value("dt")) {
-    settings.timeStep = parseNumber(*dt, "dt");
-    if (!(settings.timeStep > 0) || settings.timeStep > 10)
-      throw UsageError("--dt must be above 0 and at most 10 s, got '" + *dt + "'");
-  }
+  SimulationSettings settings = parseIntegratorAndStep(args, false);
   const int steps = args.intValue("steps", 100, 1, 1'000'000);
 
   file = control;

@@ -5,6 +5,7 @@
 #include <sstream>
 
 #include "cli/cli_common.h"
+#include "io/vtk_writer.h"
 #include "sim/standard_forms.h"
 
 namespace sculpt::cli {
@@ -114,6 +115,33 @@ std::optional<FemModel> buildFemModel(const CellComplex& control, const FemSetup
   auto model = FemModel::create(control, setup, &error, &progress);
   if (!model) printError(file + ": " + (error.empty() ? "cancelled" : error));
   return model;
+}
+
+SimulationSettings parseIntegratorAndStep(const CliArgs& args, bool dtRequired) {
+  SimulationSettings settings;
+  if (auto name = args.value("integrator")) {
+    const auto integrator = parseIntegrator(*name);
+    if (!integrator)
+      throw UsageError("--integrator must be paper or implicit, got '" + *name + "'");
+    settings.integrator = *integrator;
+  }
+  const std::optional<std::string> dt =
+      dtRequired ? std::optional<std::string>(args.requiredValue("dt")) : args.value("dt");
+  if (dt) {
+    settings.timeStep = parseNumber(*dt, "dt");
+    if (!(settings.timeStep > 0) || settings.timeStep > 10.0)
+      throw UsageError("--dt must be above 0 and at most 10 s, got '" + *dt + "'");
+  }
+  return settings;
+}
+
+void writeDeformedControlVtk(const FemModel& model, const Points& positions,
+                             const std::string& path) {
+  CellComplex deformed = model.control();
+  deformed.positions = positions;
+  const Points displacement = positions - model.restControl();
+  const VtkPointVectors field{"displacement", &displacement};
+  writeVtk(deformed, model.subdivision().topologies.front(), path, {&field, 1});
 }
 
 double maxNodeDisplacement(const FemModel& model, const Points& control) {

@@ -48,6 +48,15 @@ void applyConstraintsAndForces(Simulator& simulator, const FemCommandOptions& op
 std::optional<FemModel> buildFemModel(const CellComplex& control, const FemSetup& setup,
                                       const std::string& file);
 
+/// --integrator paper|implicit (default implicit) and --dt S (0 < S <= 10; `dtRequired` or
+/// default 1/60 s) into settings. Throws UsageError.
+SimulationSettings parseIntegratorAndStep(const CliArgs& args, bool dtRequired);
+
+/// Writes the control mesh at `positions` with the POINT_DATA vector 'displacement' (from the
+/// rest control points), as static and simulate do.
+void writeDeformedControlVtk(const FemModel& model, const Points& positions,
+                             const std::string& path);
+
 /// Largest displacement of the simulation nodes (A (p - p_rest)), in metres.
 double maxNodeDisplacement(const FemModel& model, const Points& control);
 

@@ -13,7 +13,6 @@
 #include "cli/cli_common.h"
 #include "cli/commands.h"
 #include "cli/fem_options.h"
-#include "io/vtk_writer.h"
 #include "sim/standard_forms.h"
 
 namespace sculpt::cli {
@@ -34,7 +33,6 @@ const char* const kSimulateUsage =
 
 namespace {
 
-constexpr double kMaxTimeStep = 10.0;
 constexpr int kMaxSteps = 10'000'000;
 constexpr size_t kMaxMessageKinds = 10;
 const Eigen::Vector3d kGravity(0.0, -9.81, 0.0);
@@ -117,16 +115,7 @@ int simulateCommand(const CliArgs& args, std::string& file) {
   if (args.positional().size() != 1)
     throw UsageError("simulate needs exactly one CONTROL file (see --help)");
   const FemCommandOptions options = parseFemOptions(args);
-  SimulationSettings settings;
-  if (auto name = args.value("integrator")) {
-    const auto integrator = parseIntegrator(*name);
-    if (!integrator)
-      throw UsageError("--integrator must be paper or implicit, got '" + *name + "'");
-    settings.integrator = *integrator;
-  }
-  settings.timeStep = parseNumber(args.requiredValue("dt"), "dt");
-  if (!(settings.timeStep > 0) || settings.timeStep > kMaxTimeStep)
-    throw UsageError("--dt must be above 0 and at most 10 s, got '" + *args.value("dt") + "'");
+  SimulationSettings settings = parseIntegratorAndStep(args, true);
   if (!args.has("steps")) throw UsageError("--steps is required");
   const int steps = args.intValue("steps", 0, 1, kMaxSteps);
   const std::string out = args.requiredValue("out");
@@ -181,12 +170,7 @@ int simulateCommand(const CliArgs& args, std::string& file) {
   const int stepsRun = completed + (failed ? 1 : 0);
   messages.printSummary(stepsRun);
 
-  const CellComplex& control = model->control();
-  CellComplex deformed = control;
-  deformed.positions = simulator.positions();
-  const Points displacement = simulator.positions() - control.positions;
-  const VtkPointVectors field{"displacement", &displacement};
-  writeVtk(deformed, model->subdivision().topologies.front(), out, {&field, 1});
+  writeDeformedControlVtk(*model, simulator.positions(), out);
   std::printf(
       "steps=%d time=%.9g max_displacement=%.9g kinetic_energy=%.9g elastic_energy=%.9g "
       "substeps=%lld cg_iterations=%.1f\n",

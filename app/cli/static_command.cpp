@@ -8,7 +8,6 @@
 #include "cli/cli_common.h"
 #include "cli/commands.h"
 #include "cli/fem_options.h"
-#include "io/vtk_writer.h"
 
 namespace sculpt::cli {
 
@@ -50,12 +49,7 @@ int staticCommand(const CliArgs& args, std::string& file) {
   const StaticReport report = simulator.solveStatic();
   if (!report.message.empty()) std::cerr << "static: " << report.message << '\n';
 
-  const CellComplex& control = model->control();
-  CellComplex deformed = control;
-  deformed.positions = simulator.positions();
-  const Points displacement = simulator.positions() - control.positions;
-  const VtkPointVectors field{"displacement", &displacement};
-  writeVtk(deformed, model->subdivision().topologies.front(), out, {&field, 1});
+  writeDeformedControlVtk(*model, simulator.positions(), out);
   std::printf("max_displacement=%.9g iterations=%d residual=%.3g\n",
               maxNodeDisplacement(*model, simulator.positions()), report.cgIterations,
               report.residual);

@@ -177,6 +177,25 @@ Points Simulator::hessianProduct(const Points& dx, bool withInertia) {
   return r.control;
 }
 
+CgResult Simulator::newtonStep(const Points& gradient, bool withInertia, double tolerance,
+                               Points& dx) {
+  const Eigen::VectorXd b = -gather(gradient, freeDofs_);
+  Eigen::VectorXd x = Eigen::VectorXd::Zero(b.size());
+  Points direction = Points::Zero(position_.rows(), 3);
+  const LinearOperator op = [&](const Eigen::VectorXd& in, Eigen::VectorXd& out) {
+    direction.setZero();
+    scatter(in, freeDofs_, direction);
+    out = gather(hessianProduct(direction, withInertia), freeDofs_);
+  };
+  const LinearOperator pre = [&](const Eigen::VectorXd& r, Eigen::VectorXd& z) {
+    preconditioner_->apply(r, z);
+  };
+  const CgResult cg = conjugateGradient(op, pre, b, x, tolerance, settings_.maxIterations);
+  dx = Points::Zero(position_.rows(), 3);
+  scatter(x, freeDofs_, dx);
+  return cg;
+}
+
 double Simulator::systemLoadEnergy(const Points& x) {
   model_.nodesFromControl(x, scratchNodes_);
   const FormState state{x, scratchNodes_};
@@ -264,24 +283,11 @@ Simulator::Attempt Simulator::implicitSubstep(double h) {
     position_ = start;
     return a;
   }
-  const Eigen::VectorXd b = -gather(g, freeDofs_);
   preconditioner_->update(model_, 1.0 / (h * h), 1.0 / h, 1.0, freeDofs_);
-  Eigen::VectorXd x = Eigen::VectorXd::Zero(b.size());
-  Points direction = Points::Zero(position_.rows(), 3);
-  const LinearOperator op = [&](const Eigen::VectorXd& in, Eigen::VectorXd& out) {
-    direction.setZero();
-    scatter(in, freeDofs_, direction);
-    out = gather(hessianProduct(direction, true), freeDofs_);
-  };
-  const LinearOperator pre = [&](const Eigen::VectorXd& r, Eigen::VectorXd& z) {
-    preconditioner_->apply(r, z);
-  };
-  const CgResult cg =
-      conjugateGradient(op, pre, b, x, settings_.implicitTolerance, settings_.maxIterations);
+  Points dx;
+  const CgResult cg = newtonStep(g, true, settings_.implicitTolerance, dx);
   a.iterations = cg.iterations;
   a.residual = cg.relativeResidual;
-  Points dx = Points::Zero(position_.rows(), 3);
-  scatter(x, freeDofs_, dx);
   position_ += dx;
   velocity_ = (position_ - start) / h;
   Attempt check = checkState(start, loadBefore);
@@ -430,15 +436,6 @@ StaticReport Simulator::solveStatic(double tolerance, int maxNewtonIterations) {
     report.message = "no loads";
     return report;
   }
-  Points direction = Points::Zero(position_.rows(), 3);
-  const LinearOperator op = [&](const Eigen::VectorXd& in, Eigen::VectorXd& out) {
-    direction.setZero();
-    scatter(in, freeDofs_, direction);
-    out = gather(hessianProduct(direction, false), freeDofs_);
-  };
-  const LinearOperator pre = [&](const Eigen::VectorXd& r, Eigen::VectorXd& z) {
-    preconditioner_->apply(r, z);
-  };
   for (int it = 0; it < maxNewtonIterations; ++it) {
     const Points g = prepareAndGradient(position_, false);
     report.residual = g.norm() / scale;
@@ -450,14 +447,11 @@ StaticReport Simulator::solveStatic(double tolerance, int maxNewtonIterations) {
       report.converged = true;
       return report;
     }
-    const Eigen::VectorXd b = -gather(g, freeDofs_);
-    Eigen::VectorXd x = Eigen::VectorXd::Zero(b.size());
-    const CgResult cg = conjugateGradient(op, pre, b, x, std::min(1e-3, 0.1 * tolerance / report.residual), settings_.maxIterations);
+    Points dx;
+    const CgResult cg =
+        newtonStep(g, false, std::min(1e-3, 0.1 * tolerance / report.residual), dx);
     report.cgIterations += cg.iterations;
-
     report.newtonIterations = it + 1;
-    Points dx = Points::Zero(position_.rows(), 3);
-    scatter(x, freeDofs_, dx);
     position_ += dx;
     // Positions carry about 1e-16 of the solid's size: once the update is below what they
     // can represent of the displacement, the remaining force residual is rounding (it grows

@@ -17,6 +17,7 @@
 #include <string>
 #include <vector>
 
+#include "sim/conjugate_gradient.h"
 #include "sim/fem_model.h"
 #include "sim/form.h"
 
@@ -114,6 +115,9 @@ class Simulator {
   // gradient, or their Hessian product at the prepared state; folded onto the control points
   // with fixed rows zeroed.
   Points prepareAndGradient(const Points& x, bool withInertia);
+  // Solves H dx = -gradient on the free coordinates by preconditioned CG (H at the prepared
+  // state, the preconditioner already current).
+  CgResult newtonStep(const Points& gradient, bool withInertia, double tolerance, Points& dx);
   Points hessianProduct(const Points& dx, bool withInertia);
   void zeroFixed(Points& x) const;
   double systemLoadEnergy(const Points& x);

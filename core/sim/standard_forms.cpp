@@ -23,34 +23,25 @@ void ElasticForm::addHessianProduct(const FormState&, const FormState& dx, FormG
   model_.elastic().addHessianProduct(dx.nodes, r.nodes);
 }
 
-double InertiaForm::energy(const FormState& x) const {
-  const Points d = x.control - predicted_;
-  const Points Md = applyScalarMatrix(model_.reducedMass(), d);
-  return 0.5 / (h_ * h_) * d.cwiseProduct(Md).sum();
+QuadraticControlForm::QuadraticControlForm(const FemModel& model, MassField field, double scale)
+    : model_(model), field_(field), scale_(scale), reference_(model.restControl()) {}
+
+const SparseMatrix& QuadraticControlForm::matrix() const {
+  return field_ == MassField::Density ? model_.reducedMass() : model_.reducedDamping();
 }
 
-void InertiaForm::addGradient(const FormState& x, FormGradient& g) const {
-  g.control += applyScalarMatrix(model_.reducedMass(), x.control - predicted_) / (h_ * h_);
+double QuadraticControlForm::energy(const FormState& x) const {
+  const Points d = x.control - reference_;
+  return 0.5 * scale_ * d.cwiseProduct(applyScalarMatrix(matrix(), d)).sum();
 }
 
-void InertiaForm::addHessianProduct(const FormState&, const FormState& dx,
-                                    FormGradient& r) const {
-  r.control += applyScalarMatrix(model_.reducedMass(), dx.control) / (h_ * h_);
+void QuadraticControlForm::addGradient(const FormState& x, FormGradient& g) const {
+  g.control += scale_ * applyScalarMatrix(matrix(), x.control - reference_);
 }
 
-double DampingForm::energy(const FormState& x) const {
-  const Points d = x.control - start_;
-  const Points Dd = applyScalarMatrix(model_.reducedDamping(), d);
-  return 0.5 / h_ * d.cwiseProduct(Dd).sum();
-}
-
-void DampingForm::addGradient(const FormState& x, FormGradient& g) const {
-  g.control += applyScalarMatrix(model_.reducedDamping(), x.control - start_) / h_;
-}
-
-void DampingForm::addHessianProduct(const FormState&, const FormState& dx,
-                                    FormGradient& r) const {
-  r.control += applyScalarMatrix(model_.reducedDamping(), dx.control) / h_;
+void QuadraticControlForm::addHessianProduct(const FormState&, const FormState& dx,
+                                             FormGradient& r) const {
+  r.control += scale_ * applyScalarMatrix(matrix(), dx.control);
 }
 
 const Eigen::VectorXd& GravityForm::weights() const {

@@ -22,36 +22,40 @@ class ElasticForm : public Form {
   bool corotated_;
 };
 
-/// (1 / (2 h^2)) (p - p^)^T M~ (p - p^): the inertia of a backward Euler step, p^ = p_n + h v_n.
-class InertiaForm : public Form {
+/// (scale / 2) (p - r)^T S (p - r) with S the reduced mass or damping matrix (scalar, each
+/// coordinate) and r a reference configuration. The reference starts at the rest shape.
+class QuadraticControlForm : public Form {
  public:
-  InertiaForm(const FemModel& model, double h) : model_(model), h_(h) {}
-  std::string name() const override { return "inertia"; }
-  void setPrediction(const Points& predicted) { predicted_ = predicted; }
+  QuadraticControlForm(const FemModel& model, MassField field, double scale);
+  void setReference(const Points& reference) { reference_ = reference; }
   double energy(const FormState& x) const override;
   void addGradient(const FormState& x, FormGradient& g) const override;
   void addHessianProduct(const FormState& x, const FormState& dx, FormGradient& r) const override;
 
  private:
+  const SparseMatrix& matrix() const;
   const FemModel& model_;
-  double h_;
-  Points predicted_;
+  MassField field_;
+  double scale_;
+  Points reference_;
+};
+
+/// (1 / (2 h^2)) (p - p^)^T M~ (p - p^): the inertia of a backward Euler step, p^ = p_n + h v_n.
+class InertiaForm : public QuadraticControlForm {
+ public:
+  InertiaForm(const FemModel& model, double h)
+      : QuadraticControlForm(model, MassField::Density, 1.0 / (h * h)) {}
+  std::string name() const override { return "inertia"; }
+  void setPrediction(const Points& predicted) { setReference(predicted); }
 };
 
 /// (1 / (2 h)) (p - p_n)^T D~ (p - p_n): Rayleigh's dissipation of a backward Euler step.
-class DampingForm : public Form {
+class DampingForm : public QuadraticControlForm {
  public:
-  DampingForm(const FemModel& model, double h) : model_(model), h_(h) {}
+  DampingForm(const FemModel& model, double h)
+      : QuadraticControlForm(model, MassField::Damping, 1.0 / h) {}
   std::string name() const override { return "damping"; }
-  void setStart(const Points& start) { start_ = start; }
-  double energy(const FormState& x) const override;
-  void addGradient(const FormState& x, FormGradient& g) const override;
-  void addHessianProduct(const FormState& x, const FormState& dx, FormGradient& r) const override;
-
- private:
-  const FemModel& model_;
-  double h_;
-  Points start_;
+  void setStart(const Points& start) { setReference(start); }
 };
 
 /// -sum g . (M~ p): uniform gravity g (m/s^2) on the consistent mass (A 1 = 1, so this is the

@@ -15,6 +15,7 @@
 
 #include "fem/elastic_kernel.h"
 #include "sim/fem_model.h"
+#include "support/fem_builders.h"
 #include "support/mesh_builders.h"
 
 namespace sculpt {
@@ -23,14 +24,6 @@ namespace {
 using namespace sculpt::test;
 
 double dot(const Points& a, const Points& b) { return (a.array() * b.array()).sum(); }
-
-Points randomPoints(Eigen::Index rows, double amplitude, std::mt19937_64& rng) {
-  std::uniform_real_distribution<double> uni(-amplitude, amplitude);
-  Points p(rows, 3);
-  for (Eigen::Index i = 0; i < rows; ++i)
-    for (int d = 0; d < 3; ++d) p(i, d) = uni(rng);
-  return p;
-}
 
 class GradientConsistency : public ::testing::Test {
  protected:

@@ -19,33 +19,18 @@
 #include "sim/load_forms.h"
 #include "sim/material_point.h"
 #include "sim/standard_forms.h"
+#include "support/fem_builders.h"
 #include "support/mesh_builders.h"
 
 namespace sculpt {
 namespace {
 
-std::unique_ptr<FemModel> buildModel(const CellComplex& control, const FemSetup& setup) {
-  std::string error;
-  auto model = FemModel::create(control, setup, &error);
-  EXPECT_TRUE(model.has_value()) << error;
-  if (!model) return nullptr;
-  return std::make_unique<FemModel>(std::move(*model));
-}
-
-CellComplex block3() {
-  return loadControlMeshJson(std::filesystem::path(SCULPT_SOURCE_DIR) / "assets" / "block3.json");
-}
+using test::block3;
+using test::buildModel;
+using test::randomPoints;
 
 double sizeOf(const Points& p) {
   return (p.colwise().maxCoeff() - p.colwise().minCoeff()).norm();
-}
-
-Points randomPoints(Eigen::Index rows, double amplitude, std::mt19937_64& rng) {
-  std::uniform_real_distribution<double> uni(-amplitude, amplitude);
-  Points p(rows, 3);
-  for (Eigen::Index i = 0; i < rows; ++i)
-    for (int d = 0; d < 3; ++d) p(i, d) = uni(rng);
-  return p;
 }
 
 // Total gradient on the control points: control + A^T nodes.

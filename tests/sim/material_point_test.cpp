@@ -16,25 +16,14 @@
 #include "sim/fem_model.h"
 #include "sim/material_point.h"
 #include "subdiv/tricubic_patch.h"
+#include "support/fem_builders.h"
 #include "support/mesh_builders.h"
 
 namespace sculpt {
 namespace {
 
-std::unique_ptr<FemModel> buildModel(const CellComplex& control, int level, bool trilinear) {
-  FemSetup setup;
-  setup.level = level;
-  setup.trilinear = trilinear;
-  std::string error;
-  auto model = FemModel::create(control, setup, &error);
-  EXPECT_TRUE(model.has_value()) << error;
-  if (!model) return nullptr;
-  return std::make_unique<FemModel>(std::move(*model));
-}
-
-CellComplex block3() {
-  return loadControlMeshJson(std::filesystem::path(SCULPT_SOURCE_DIR) / "assets" / "block3.json");
-}
+using test::block3;
+using test::buildModel;
 
 Eigen::Vector3d row(const Points& p, uint32_t i) { return p.row(i).transpose(); }
 
