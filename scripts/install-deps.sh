@@ -19,6 +19,7 @@ PACKAGES=(
   libosd-dev         # OpenSubdiv: Catmull-Clark oracle for the boundary surface
   libhidapi-dev      # haptic devices over HID
   libtinygltf-dev    # glTF import and export
+  libstb-dev         # stb_image_write: PNG figures and screenshots
   nlohmann-json3-dev # JSON control meshes and scripts
   # Tool chain.
   cmake

@@ -16,6 +16,7 @@
 #include "cli/cli_args.h"
 #include "cli/cli_common.h"
 #include "cli/commands.h"
+#include "cli/bench_deform.h"
 #include "cli/fem_options.h"
 #include "mesh/topology.h"
 #include "sim/standard_forms.h"
@@ -36,7 +37,12 @@ const char* const kBenchUsage =
     "      warm-up steps. Without --fix the control points of the lowest layer (least rest y)\n"
     "      are fixed. Prints the model setup time, threads, control points and nodes; the last\n"
     "      line is fem_step_ms=<median> elements=<n> tricubic=<n> trilinear=<n> pyramid=<n>\n"
-    "      cg_iterations=<mean per timed step>. Exit 1 when a step fails.\n";
+    "      cg_iterations=<mean per timed step>. Exit 1 when a step fails.\n"
+    "  bench deform [--vertices N] [--method phong|linear|vertex|attribute] [--repeat R]\n"
+    "      Built-in scene: a tet lattice of 9261 nodes and N points (default 1000000) on a\n"
+    "      bumpy sphere inside it. Times a frame (gradients, per-cell coefficients, every point\n"
+    "      in single precision; median of R, default 31). Last line: deform_ms=<median per\n"
+    "      frame> embed_ms=<precompute> vertices=<N> method=<M> threads=<T>.\n";
 
 namespace {
 
@@ -50,6 +56,7 @@ std::vector<OptionSpec> allOptions() {
   for (const OptionSpec& spec : kFemOptions)
     if (spec.name != "levels") specs.push_back(spec);
   specs.insert(specs.end(), std::begin(kFemBenchOptions), std::end(kFemBenchOptions));
+  specs.insert(specs.end(), std::begin(kBenchDeformOptions), std::end(kBenchDeformOptions));
   return specs;
 }
 
@@ -246,9 +253,10 @@ int bench(const CliArgs& args, std::string& file) {
     return kExitSuccess;
   }
   if (args.positional().empty())
-    throw UsageError("bench needs a benchmark name (subdivide or fem)");
+    throw UsageError("bench needs a benchmark name (subdivide, fem or deform)");
   const std::string& name = args.positional()[0];
   if (name == "fem") return benchFem(args, file);
+  if (name == "deform") return benchDeform(args);
   if (name == "subdivide") {
     for (const OptionSpec& spec : allOptions()) {
       if (args.has(spec.name) && spec.name != "levels" && spec.name != "repeat" &&
@@ -257,7 +265,7 @@ int bench(const CliArgs& args, std::string& file) {
     }
     return benchSubdivide(args, file);
   }
-  throw UsageError("unknown benchmark '" + name + "' (expected subdivide or fem)");
+  throw UsageError("unknown benchmark '" + name + "' (expected subdivide, fem or deform)");
 }
 
 }  // namespace

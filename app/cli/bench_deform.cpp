@@ -1,0 +1,114 @@
+// sculpt-cli bench deform [--vertices N] [--method M] [--repeat R]
+//
+// The built-in scene: a 20x20x20-cube tetrahedral lattice of the unit cube (9261 nodes, 48000
+// tetrahedra) and N points on a bumpy sphere inside it (a stand-in for a detailed surface, in a
+// coherent order as mesh files have). A frame is what the application does per displayed frame:
+// new node positions in, gradients, per-cell coefficients and every point's position out
+// (single precision, cell-sorted structure of arrays, all worker threads).
+
+#include "cli/bench_deform.h"
+
+#include <algorithm>
+#include <chrono>
+#include <cmath>
+#include <cstdio>
+#include <iostream>
+#include <numbers>
+#include <string>
+#include <vector>
+
+#include "embed/embedded_deformer.h"
+#include "embed/interpolation_study.h"
+#include "mesh/lattice_mesh.h"
+#include "util/parallel_for.h"
+
+namespace sculpt::cli {
+
+const OptionSpec kBenchDeformOptions[3] = {{"vertices", true}, {"method", true}, {"repeat", true}};
+
+namespace {
+
+using Clock = std::chrono::steady_clock;
+
+double millisecondsSince(Clock::time_point start) {
+  return std::chrono::duration<double, std::milli>(Clock::now() - start).count();
+}
+
+/// N points on a bumpy sphere (Fibonacci spiral order: neighbours in the list are neighbours in
+/// space, as in a real mesh's vertex order).
+Points bumpySphere(uint32_t n) {
+  Points points(n, 3);
+  const double golden = std::numbers::pi * (3.0 - std::sqrt(5.0));
+  for (uint32_t i = 0; i < n; ++i) {
+    const double z = 1.0 - 2.0 * (i + 0.5) / n;
+    const double ring = std::sqrt(std::max(0.0, 1.0 - z * z));
+    const double phi = golden * i;
+    const Eigen::Vector3d direction(ring * std::cos(phi), ring * std::sin(phi), z);
+    const double radius = 0.4 + 0.03 * std::sin(7 * phi) * std::sin(5 * std::acos(z));
+    points.row(i) = (Eigen::Vector3d::Constant(0.5) + radius * direction).transpose();
+  }
+  return points;
+}
+
+}  // namespace
+
+int benchDeform(const CliArgs& args) {
+  const int vertices = args.intValue("vertices", 1'000'000, 1, 50'000'000);
+  const int repeat = args.intValue("repeat", 31, 1, 10'000);
+  const std::string methodName = args.value("method").value_or("phong");
+  const auto method = parseInterpolationMethod(methodName);
+  if (!method)
+    throw UsageError("unknown method '" + methodName + "' (expected phong, linear, vertex or attribute)");
+
+  LatticeSpec spec;
+  spec.cubes = {20, 20, 20};
+  spec.spacing = 1.0 / 20;
+  VolumeMesh mesh = tetLattice(spec);
+  const Points surface = bumpySphere(static_cast<uint32_t>(vertices));
+
+  DeformerSettings settings;
+  settings.buildAttributeWeights = *method == InterpolationMethod::Attribute;
+  const Clock::time_point embedStart = Clock::now();
+  EmbeddedDeformer deformer(mesh, surface, settings);
+  const double embedMs = millisecondsSince(embedStart);
+
+  // Frames alternate between two deformed states so that nothing is cached across frames.
+  Points frames[2];
+  for (int f = 0; f < 2; ++f) {
+    frames[f].resize(mesh.positions.rows(), 3);
+    for (Eigen::Index i = 0; i < mesh.positions.rows(); ++i) {
+      const Eigen::Vector3d X = mesh.positions.row(i).transpose() - Eigen::Vector3d::Constant(0.5);
+      frames[f].row(i) = ((1.0 - 0.1 * f) * bendAndTwist(X)).transpose();
+    }
+  }
+  FloatPositions out;
+  out.resize(deformer.numPoints());
+  std::vector<double> samples, nodeStage, pointStage;
+  for (int r = -2; r < repeat; ++r) {  // two untimed warm-up frames
+    const Clock::time_point start = Clock::now();
+    deformer.setFrame(frames[(r + 2) % 2], *method);
+    const Clock::time_point middle = Clock::now();
+    deformer.evaluateSorted(out.x.data(), out.y.data(), out.z.data());
+    if (r < 0) continue;
+    samples.push_back(millisecondsSince(start));
+    nodeStage.push_back(std::chrono::duration<double, std::milli>(middle - start).count());
+    pointStage.push_back(millisecondsSince(middle));
+  }
+  const auto median = [](std::vector<double>& v) {
+    std::sort(v.begin(), v.end());
+    return v[v.size() / 2];
+  };
+  const double medianMs = median(samples);
+  std::cerr << "bench deform: per frame, gradients and cell coefficients " << median(nodeStage)
+            << " ms, points " << median(pointStage) << " ms (medians)\n";
+  char line[256];
+  std::snprintf(line, sizeof line,
+                "deform_ms=%.3f embed_ms=%.1f vertices=%d method=%s threads=%u", medianMs, embedMs,
+                vertices, methodName.c_str(), workerCount());
+  std::cerr << "bench deform: " << mesh.numNodes() << " nodes, " << mesh.numCells()
+            << " tetrahedra, " << deformer.embedding().outsideCount << " points outside\n";
+  std::cout << line << '\n';
+  return 0;
+}
+
+}  // namespace sculpt::cli

@@ -1,0 +1,68 @@
+#pragma once
+// The accuracy experiments of James 2020 (its Fig. 10 and the Kelvinlet comparison), computed
+// with this program's own deformer: an analytic deformation is sampled at the nodes of a mesh,
+// interpolated to test points by each method, and compared with the analytic value there.
+
+#include <array>
+#include <functional>
+#include <span>
+#include <vector>
+
+#include <Eigen/Core>
+
+#include "embed/interpolation_method.h"
+#include "mesh/cell_complex.h"
+#include "mesh/volume_mesh.h"
+
+namespace sculpt {
+
+using AnalyticDeformation = std::function<Eigen::Vector3d(const Eigen::Vector3d&)>;
+
+inline constexpr std::array<InterpolationMethod, 4> kAllMethods = {
+    InterpolationMethod::Linear, InterpolationMethod::Vertex, InterpolationMethod::Phong,
+    InterpolationMethod::Attribute};
+
+/// Errors |f_method(X) - phi(X)| over the test points, per method (kAllMethods order).
+struct MethodErrors {
+  std::array<double, 4> max{};
+  std::array<double, 4> rms{};
+};
+
+/// Deforms `mesh` by phi at its nodes and measures each method at `testPoints` (double precision,
+/// default settings: eps = 1, attribute radius 1.5 x mean edge length).
+MethodErrors measureInterpolationErrors(const VolumeMesh& mesh, const Points& testPoints,
+                                        const AnalyticDeformation& phi);
+
+/// The smooth test deformation of the convergence experiment: a bend of radius 1.5 about the
+/// y axis followed by a twist about z of 0.8 rad per unit length.
+Eigen::Vector3d bendAndTwist(const Eigen::Vector3d& X);
+
+enum class StudyCells { Tetrahedra, Hexahedra };
+enum class StudyPlacement {
+  Interior,  ///< the test cube has three layers of cubes on every side
+  Surface,   ///< the test cube is in the top layer: nothing above it
+};
+
+struct ConvergenceRow {
+  double spacing = 0.0;     ///< cube edge h
+  double meanEdge = 0.0;    ///< mean cell edge length of the mesh
+  MethodErrors errors;
+};
+
+struct ConvergenceSeries {
+  StudyCells cells = StudyCells::Tetrahedra;
+  StudyPlacement placement = StudyPlacement::Interior;
+  std::vector<ConvergenceRow> rows;
+  std::array<double, 4> slopes{};  ///< least-squares log-log slopes of max error vs mean edge
+};
+
+/// The convergence experiment: a lattice of cubes of edge h (split into 6 tetrahedra each, or
+/// hexahedra) translated so that a fixed test cube [P0, P0 + h]^3 keeps 25 test points at the
+/// same local positions for every h; bendAndTwist as the deformation.
+ConvergenceSeries runConvergenceStudy(StudyCells cells, StudyPlacement placement,
+                                      std::span<const double> spacings);
+
+/// Least-squares slope of log(y) against log(x).
+double logLogSlope(std::span<const double> x, std::span<const double> y);
+
+}  // namespace sculpt

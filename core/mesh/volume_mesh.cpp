@@ -1,0 +1,160 @@
+#include "mesh/volume_mesh.h"
+
+#include <Eigen/Geometry>
+#include <algorithm>
+#include <cmath>
+#include <cstdio>
+
+namespace sculpt {
+namespace {
+
+Eigen::Vector3d nodePosition(const VolumeMesh& mesh, uint32_t node) {
+  return mesh.positions.row(node).transpose();
+}
+
+double determinant(const Eigen::Vector3d& a, const Eigen::Vector3d& b, const Eigen::Vector3d& c) {
+  return a.dot(b.cross(c));
+}
+
+std::string shortNumber(double value) {
+  char buffer[32];
+  std::snprintf(buffer, sizeof buffer, "%.3g", value);
+  return buffer;
+}
+
+std::string cellLabel(uint32_t cell, const char* kind) {
+  return "cell " + std::to_string(cell) + " (" + kind + ")";
+}
+
+// Trilinear corner coordinates of the hexahedron (volume_mesh.h) and, per corner, its neighbours
+// along s, t and u: the Jacobian at a corner is made of the three edges leaving it.
+constexpr int kHexCornerCoordinates[8][3] = {{0, 0, 0}, {1, 0, 0}, {1, 1, 0}, {0, 1, 0},
+                                             {0, 0, 1}, {1, 0, 1}, {1, 1, 1}, {0, 1, 1}};
+constexpr int kHexNeighbour[8][3] = {{1, 3, 4}, {0, 2, 5}, {3, 1, 6}, {2, 0, 7},
+                                     {5, 7, 0}, {4, 6, 1}, {7, 5, 2}, {6, 4, 3}};
+
+double hexCornerJacobian(const VolumeMesh& mesh, std::span<const uint32_t> nodes, int corner) {
+  const Eigen::Vector3d origin = nodePosition(mesh, nodes[static_cast<size_t>(corner)]);
+  Eigen::Vector3d axis[3];
+  for (int k = 0; k < 3; ++k) {
+    // d/ds of the trilinear map at a corner is the edge towards the neighbour, negated on the
+    // s = 1 side.
+    const double sign = kHexCornerCoordinates[corner][k] == 0 ? 1.0 : -1.0;
+    const int neighbour = kHexNeighbour[corner][k];
+    axis[k] = sign * (nodePosition(mesh, nodes[static_cast<size_t>(neighbour)]) - origin);
+  }
+  return determinant(axis[0], axis[1], axis[2]);
+}
+
+std::string hexahedronProblem(const VolumeMesh& mesh, uint32_t cell) {
+  const std::span<const uint32_t> nodes = mesh.cells.row(cell);
+  int negative = 0;
+  int firstBad = -1;
+  double firstBadValue = 0.0;
+  for (int corner = 0; corner < 8; ++corner) {
+    const double det = hexCornerJacobian(mesh, nodes, corner);
+    if (det < 0.0) ++negative;
+    if (!(det > 0.0) && firstBad < 0) {
+      firstBad = corner;
+      firstBadValue = det;
+    }
+  }
+  if (firstBad < 0) return {};
+  const std::string where = " at corner " + std::to_string(firstBad);
+  const std::string value = "trilinear Jacobian determinant " + shortNumber(firstBadValue) + where;
+  const std::string label = cellLabel(cell, "hexahedron") + ": ";
+  if (negative == 8) return label + "inverted, " + value;
+  if (firstBadValue == 0.0) return label + "degenerate, " + value;
+  return label + "twisted or not convex, " + value;
+}
+
+// The split of a quadrilateral side (a, b, c, d in loop order): true for the diagonal a-c.
+bool cutsThroughFirstDiagonal(uint32_t a, uint32_t b, uint32_t c, uint32_t d) {
+  return std::min(a, c) < std::min(b, d);
+}
+
+}  // namespace
+
+void splitPyramid(VolumeMesh& mesh, const std::array<uint32_t, 5>& v) {
+  // With the base counter-clockwise seen from the apex, (base triangle, apex) is positive.
+  if (cutsThroughFirstDiagonal(v[0], v[1], v[2], v[3])) {
+    mesh.addTetrahedron({v[0], v[1], v[2], v[4]});
+    mesh.addTetrahedron({v[0], v[2], v[3], v[4]});
+  } else {
+    mesh.addTetrahedron({v[1], v[2], v[3], v[4]});
+    mesh.addTetrahedron({v[1], v[3], v[0], v[4]});
+  }
+}
+
+void splitWedge(VolumeMesh& mesh, const std::array<uint32_t, 6>& nodes) {
+  // Dompierre, Labbé, Vallet, Camarero, "How to subdivide pyramids, prisms and hexahedra into
+  // tetrahedra" (1999). The node order is Gmsh's: the triangle 0,1,2 is counter-clockwise seen
+  // from 3,4,5, i.e. tetrahedron (0,1,2,3) is positive. (VTK lists its wedge the other way round;
+  // its reader reorders.)
+  //
+  // Relabel by an orientation-preserving symmetry of the wedge so that the smallest node id is
+  // at position 0; the two sides through it are then cut through it, and only the side opposite
+  // (1,2,5,4) is left to choose. Every choice gives three positive tetrahedra.
+  static constexpr int kRotation[6][6] = {{0, 1, 2, 3, 4, 5}, {1, 2, 0, 4, 5, 3},
+                                          {2, 0, 1, 5, 3, 4}, {3, 5, 4, 0, 2, 1},
+                                          {4, 3, 5, 1, 0, 2}, {5, 4, 3, 2, 1, 0}};
+  const auto smallest = std::min_element(nodes.begin(), nodes.end()) - nodes.begin();
+  std::array<uint32_t, 6> v{};
+  for (size_t k = 0; k < 6; ++k) v[k] = nodes[static_cast<size_t>(kRotation[smallest][k])];
+
+  if (cutsThroughFirstDiagonal(v[1], v[2], v[5], v[4])) {  // diagonal 1-5
+    mesh.addTetrahedron({v[0], v[1], v[2], v[5]});
+    mesh.addTetrahedron({v[0], v[1], v[5], v[4]});
+  } else {  // diagonal 2-4
+    mesh.addTetrahedron({v[0], v[1], v[2], v[4]});
+    mesh.addTetrahedron({v[0], v[4], v[2], v[5]});
+  }
+  mesh.addTetrahedron({v[0], v[4], v[5], v[3]});
+}
+
+double tetrahedronSignedVolume(const VolumeMesh& mesh, uint32_t cell) {
+  const std::span<const uint32_t> v = mesh.cells.row(cell);
+  const Eigen::Vector3d origin = nodePosition(mesh, v[0]);
+  return determinant(nodePosition(mesh, v[1]) - origin, nodePosition(mesh, v[2]) - origin,
+                     nodePosition(mesh, v[3]) - origin) /
+         6.0;
+}
+
+std::string findVolumeMeshProblem(const VolumeMesh& mesh) {
+  if (mesh.numNodes() == 0) return "the mesh has no nodes";
+  if (mesh.numCells() == 0) return "the mesh has no cells";
+  for (uint32_t node = 0; node < mesh.numNodes(); ++node) {
+    if (!mesh.positions.row(node).allFinite()) {
+      return "node " + std::to_string(node) + ": coordinate is not finite";
+    }
+  }
+  for (uint32_t cell = 0; cell < mesh.numCells(); ++cell) {
+    const std::span<const uint32_t> nodes = mesh.cells.row(cell);
+    const std::string label = "cell " + std::to_string(cell);
+    if (nodes.size() != 4 && nodes.size() != 8) {
+      return label + ": has " + std::to_string(nodes.size()) + " nodes (expected 4 or 8)";
+    }
+    for (size_t i = 0; i < nodes.size(); ++i) {
+      if (nodes[i] >= mesh.numNodes()) {
+        return label + ": node id " + std::to_string(nodes[i]) + " out of range (the mesh has " +
+               std::to_string(mesh.numNodes()) + " nodes)";
+      }
+      if (std::find(nodes.begin(), nodes.begin() + static_cast<std::ptrdiff_t>(i), nodes[i]) !=
+          nodes.begin() + static_cast<std::ptrdiff_t>(i)) {
+        return label + ": node " + std::to_string(nodes[i]) + " appears twice";
+      }
+    }
+    if (nodes.size() == 8) {
+      if (std::string problem = hexahedronProblem(mesh, cell); !problem.empty()) return problem;
+      continue;
+    }
+    const double volume = tetrahedronSignedVolume(mesh, cell);
+    if (!(volume > 0.0)) {
+      return cellLabel(cell, "tetrahedron") + ": " + (volume < 0.0 ? "inverted" : "degenerate") +
+             ", signed volume " + shortNumber(volume);
+    }
+  }
+  return {};
+}
+
+}  // namespace sculpt

@@ -1,0 +1,58 @@
+#pragma once
+// A simulation cell mesh as other programs write it: node positions and cells that are
+// tetrahedra (4 nodes) or trilinear hexahedra (8 nodes). Pyramids and wedges from files are split
+// into tetrahedra on input (splitPyramid / splitWedge), so every consumer sees only these two.
+//
+// Node order conventions (the VTK and Gmsh ones):
+//  - tetrahedron 0,1,2,3 with det[X1-X0, X2-X0, X3-X0] > 0 (positive volume);
+//  - hexahedron 0,1,2,3 the bottom face counter-clockwise seen from above, 4..7 the top face above
+//    them; trilinear local coordinates (s,t,u) of the corners are 0:(0,0,0) 1:(1,0,0) 2:(1,1,0)
+//    3:(0,1,0) 4:(0,0,1) 5:(1,0,1) 6:(1,1,1) 7:(0,1,1).
+
+#include <array>
+#include <cstdint>
+#include <string>
+#include <vector>
+
+#include "mesh/cell_complex.h"
+#include "util/compressed_rows.h"
+
+namespace sculpt {
+
+struct VolumeMesh {
+  Points positions;                 ///< #N by 3 node positions (metres)
+  CompressedRows<uint32_t> cells;   ///< node ids per cell; a row of 4 is a tet, of 8 a hexahedron
+
+  uint32_t numNodes() const { return static_cast<uint32_t>(positions.rows()); }
+  uint32_t numCells() const { return cells.numRows(); }
+  bool isTetrahedron(uint32_t cell) const { return cells.rowSize(cell) == 4; }
+  void addTetrahedron(const std::array<uint32_t, 4>& nodes) {
+    cells.values.insert(cells.values.end(), nodes.begin(), nodes.end());
+    cells.closeRow();
+  }
+  void addHexahedron(const std::array<uint32_t, 8>& nodes) {
+    cells.values.insert(cells.values.end(), nodes.begin(), nodes.end());
+    cells.closeRow();
+  }
+};
+
+/// Appends the two tetrahedra of a pyramid (base 0,1,2,3 counter-clockwise seen from the apex 4,
+/// as in VTK and Gmsh). The base is cut along the diagonal through its smallest node id, so that
+/// a neighbour sharing the quadrilateral cuts it the same way.
+void splitPyramid(VolumeMesh& mesh, const std::array<uint32_t, 5>& nodes);
+
+/// Appends the three tetrahedra of a wedge (triangle 0,1,2 and triangle 3,4,5 above it, VTK and
+/// Gmsh order). Each quadrilateral side is cut along the diagonal through its smallest node id.
+void splitWedge(VolumeMesh& mesh, const std::array<uint32_t, 6>& nodes);
+
+/// Signed volume of tetrahedron `cell` (det/6); positive for a correctly oriented cell.
+double tetrahedronSignedVolume(const VolumeMesh& mesh, uint32_t cell);
+
+/// The first problem that makes the mesh unusable, or an empty string: no nodes or no cells, a
+/// non-finite coordinate, a node id out of range, a repeated node in a cell, a tetrahedron with
+/// non-positive volume (inverted or degenerate), a hexahedron whose trilinear Jacobian is not
+/// positive at some corner. The message names the cell ("cell 12 (tetrahedron): inverted, signed
+/// volume -1.3e-05").
+std::string findVolumeMeshProblem(const VolumeMesh& mesh);
+
+}  // namespace sculpt
