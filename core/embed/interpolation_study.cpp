@@ -6,6 +6,7 @@
 #include <Eigen/Geometry>
 
 #include "embed/embedded_deformer.h"
+#include "embed/kelvinlet.h"
 #include "mesh/lattice_mesh.h"
 
 namespace sculpt {
@@ -82,6 +83,75 @@ ConvergenceSeries runConvergenceStudy(StudyCells cells, StudyPlacement placement
     series.slopes[m] = logLogSlope(x, y);
   }
   return series;
+}
+
+const char* brushName(KelvinletBrush brush) {
+  switch (brush) {
+    case KelvinletBrush::Grab: return "grab";
+    case KelvinletBrush::Twist: return "twist";
+    case KelvinletBrush::Pinch: return "pinch";
+  }
+  return "?";
+}
+
+namespace {
+
+RegularizedKelvinlet makeBrush(KelvinletBrush brush, double amplitude) {
+  const Eigen::Vector3d centre(0.013, -0.021, 0.017);  // off the lattice's symmetry points
+  const double eps = 1.0;
+  switch (brush) {
+    case KelvinletBrush::Grab:
+      return RegularizedKelvinlet::grab(centre, amplitude * Eigen::Vector3d(1.0, 0.5, -0.3), eps);
+    case KelvinletBrush::Twist:
+      return RegularizedKelvinlet::twist(centre, amplitude * Eigen::Vector3d(0.2, 0.3, 1.0), eps);
+    case KelvinletBrush::Pinch: {
+      Eigen::Matrix3d F;
+      F << 1.0, 0.3, 0.0, 0.3, -0.5, 0.2, 0.0, 0.2, -0.5;
+      return RegularizedKelvinlet::pinch(centre, amplitude * F, eps);
+    }
+  }
+  return RegularizedKelvinlet::grab(centre, Eigen::Vector3d::Zero(), eps);
+}
+
+}  // namespace
+
+std::vector<KelvinletRow> runKelvinletStudy(std::span<const double> spacingOverEps,
+                                            bool jittered) {
+  std::mt19937 random(17);
+  std::uniform_real_distribution<double> uniform(-1.0, 1.0);
+  Points testPoints(2000, 3);
+  for (Eigen::Index p = 0; p < testPoints.rows();) {
+    const Eigen::Vector3d X(uniform(random), uniform(random), uniform(random));
+    if (X.norm() <= 1.0) testPoints.row(p++) = 1.5 * X.transpose();
+  }
+  std::vector<KelvinletRow> rows;
+  for (double ratio : spacingOverEps) {
+    LatticeSpec spec;
+    const uint32_t cubes = static_cast<uint32_t>(std::lround(4.0 / ratio));
+    spec.cubes = {cubes, cubes, cubes};
+    spec.spacing = 4.0 / cubes;
+    spec.origin = Eigen::Vector3d::Constant(-2.0);
+    VolumeMesh mesh = tetLattice(spec);
+    if (jittered) jitterLattice(mesh, spec, 0.15, 99);
+    for (KelvinletBrush brush : {KelvinletBrush::Grab, KelvinletBrush::Twist, KelvinletBrush::Pinch}) {
+      // Displacements are linear in the amplitude: scale the unit brush to max |u| = eps / 4.
+      const RegularizedKelvinlet unit = makeBrush(brush, 1.0);
+      double largest = 0.0;
+      for (Eigen::Index p = 0; p < testPoints.rows(); ++p)
+        largest = std::max(largest, unit.displacement(testPoints.row(p).transpose()).norm());
+      const RegularizedKelvinlet kelvinlet = makeBrush(brush, 0.25 / largest);
+      KelvinletRow row;
+      row.brush = brush;
+      row.spacingOverEps = ratio;
+      row.jittered = jittered;
+      row.errors = measureInterpolationErrors(
+          mesh, testPoints, [&](const Eigen::Vector3d& X) { return kelvinlet.map(X); });
+      row.rmsRatio = row.errors.rms[0] / row.errors.rms[2];
+      row.maxRatio = row.errors.max[0] / row.errors.max[2];
+      rows.push_back(row);
+    }
+  }
+  return rows;
 }
 
 double logLogSlope(std::span<const double> x, std::span<const double> y) {

@@ -62,6 +62,26 @@ struct ConvergenceSeries {
 ConvergenceSeries runConvergenceStudy(StudyCells cells, StudyPlacement placement,
                                       std::span<const double> spacings);
 
+enum class KelvinletBrush { Grab, Twist, Pinch };
+
+struct KelvinletRow {
+  KelvinletBrush brush = KelvinletBrush::Grab;
+  double spacingOverEps = 0.0;  ///< h / eps
+  bool jittered = false;
+  MethodErrors errors;
+  double rmsRatio = 0.0;  ///< linear / phong, l2 (rms) vertex error
+  double maxRatio = 0.0;  ///< linear / phong, largest vertex error
+};
+
+/// The Kelvinlet comparison: a regularized Kelvinlet (eps = 1, nu = 0.45, scaled to a largest
+/// displacement of eps / 4 in the test ball) deforms a tet lattice of [-2, 2]^3 with cube edge
+/// h = ratio * eps (regular, or with interior nodes jittered by 15% of h) and 2000 test points
+/// in the ball of radius 1.5 eps; the analytic map is the truth at both.
+std::vector<KelvinletRow> runKelvinletStudy(std::span<const double> spacingOverEps,
+                                            bool jittered);
+
+const char* brushName(KelvinletBrush brush);
+
 /// Least-squares slope of log(y) against log(x).
 double logLogSlope(std::span<const double> x, std::span<const double> y);
 

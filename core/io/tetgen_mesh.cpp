@@ -16,14 +16,19 @@ struct TetGenNodes {
   int64_t firstNumber = 0;  ///< 0 or 1: the number of the first node
 };
 
-// "<#points> <dimension 3> <#attributes> <boundary markers 0|1>", then per point
+/// A header number after the first; like TetGen, missing trailing ones take their defaults.
+uint64_t headerCountOr(TextScanner& scanner, uint64_t missing, const char* what) {
+  return scanner.atLineEnd() ? missing : scanner.count(what);
+}
+
+// "<#points> [dimension 3] [#attributes] [boundary markers 0|1]", then per point
 // "<number> <x> <y> <z> [attributes] [boundary marker]".
 TetGenNodes readNodes(std::string_view text, std::string_view sourceName) {
   TextScanner scanner(text, sourceName, '#');
   const uint64_t numPoints = scanner.count("the number of points");
-  const uint64_t dimension = scanner.count("the dimension");
-  const uint64_t numAttributes = scanner.count("the number of attributes");
-  const uint64_t numMarkers = scanner.count("the boundary marker flag (0 or 1)");
+  const uint64_t dimension = headerCountOr(scanner, 3, "the dimension");
+  const uint64_t numAttributes = headerCountOr(scanner, 0, "the number of attributes");
+  const uint64_t numMarkers = headerCountOr(scanner, 0, "the boundary marker flag (0 or 1)");
   if (dimension != 3) scanner.fail("dimension " + std::to_string(dimension) + " (must be 3)");
   if (numMarkers > 1) scanner.fail("the boundary marker flag must be 0 or 1");
   if (numPoints == 0) scanner.fail("no points (a .node file that goes with a .poly has none)");
@@ -62,13 +67,14 @@ TetGenNodes readNodes(std::string_view text, std::string_view sourceName) {
   return nodes;
 }
 
-// "<#tetrahedra> <nodes per tetrahedron 4|10> <#attributes>", then per tetrahedron
+// "<#tetrahedra> [nodes per tetrahedron 4|10] [#attributes]", then per tetrahedron
 // "<number> <node> <node> <node> <node> [6 more nodes] [attributes]".
 VolumeMesh readElements(std::string_view text, std::string_view sourceName, TetGenNodes nodes) {
   TextScanner scanner(text, sourceName, '#');
   const uint64_t numTetrahedra = scanner.count("the number of tetrahedra");
-  const uint64_t nodesPerTetrahedron = scanner.count("the number of nodes per tetrahedron");
-  const uint64_t numAttributes = scanner.count("the number of region attributes");
+  const uint64_t nodesPerTetrahedron =
+      headerCountOr(scanner, 4, "the number of nodes per tetrahedron");
+  const uint64_t numAttributes = headerCountOr(scanner, 0, "the number of region attributes");
   if (nodesPerTetrahedron != 4 && nodesPerTetrahedron != 10) {
     scanner.fail(std::to_string(nodesPerTetrahedron) + " nodes per tetrahedron (must be 4 or 10)");
   }

@@ -17,13 +17,14 @@
 
 namespace sculpt {
 
+inline char asciiLower(char c) {
+  return (c >= 'A' && c <= 'Z') ? static_cast<char>(c - 'A' + 'a') : c;
+}
+
 /// ASCII case-insensitive comparison (VTK keywords may be written in either case).
 inline bool equalsIgnoringCase(std::string_view a, std::string_view b) {
   return a.size() == b.size() && std::equal(a.begin(), a.end(), b.begin(), [](char x, char y) {
-           const auto lower = [](char c) {
-             return (c >= 'A' && c <= 'Z') ? char(c - 'A' + 'a') : c;
-           };
-           return lower(x) == lower(y);
+           return asciiLower(x) == asciiLower(y);
          });
 }
 
@@ -46,7 +47,6 @@ class TextScanner {
 
   size_t line() const { return line_; }
   size_t bytesLeft() const { return text_.size() - pos_; }
-  const std::string& sourceName() const { return source_; }
 
   // ---- Tokens -------------------------------------------------------------------------------
 

@@ -847,6 +847,10 @@ TEST(TetGenMesh, ReadsZeroBasedFilesAndTenNodeTetrahedra) {
   const std::string ele =
       "6 4 0\n0 0 1 2 6\n1 0 2 3 6\n2 0 3 7 6\n3 0 7 4 6\n4 0 4 5 6\n5 0 5 1 6\n";
   EXPECT_EQ(cellsOf(parseTetGenMesh(node, ele, "zero.node", "zero.ele")), kCubeCells);
+  // Trailing header numbers may be left out (dimension 3, 4 nodes, no attributes).
+  EXPECT_EQ(cellsOf(parseTetGenMesh(replaced(node, "8 3 0 0", "8"), replaced(ele, "6 4 0", "6"),
+                                    "short.node", "short.ele")),
+            kCubeCells);
   // Second order: the corners come first, the 6 edge nodes after them are dropped.
   const std::string ele10 =
       "6 10 0\n0 0 1 2 6 1 2 3 4 5 7\n1 0 2 3 6 1 2 3 4 5 7\n2 0 3 7 6 1 2 3 4 5 7\n"
