@@ -33,6 +33,11 @@ CellLocator::CellLocator(const VolumeMesh& mesh) : mesh_(mesh) {
     cellBoxes_[c] = box;
     centres[c] = box.center();
   }
+  // Barycentric coordinates are V^-1 (X - X0): inverting once per tetrahedron here makes each
+  // candidate test a 3x3 product.
+  tetInverse_.assign(n, Eigen::Matrix3d::Identity());
+  for (uint32_t c = 0; c < n; ++c)
+    if (mesh.isTetrahedron(c)) tetInverse_[c] = cellJacobian(mesh, c, Eigen::Vector3d::Zero()).inverse();
   order_.resize(n);
   for (uint32_t c = 0; c < n; ++c) order_[c] = c;
   nodes_.reserve(2 * (n / kLeafSize + 1));
@@ -69,8 +74,12 @@ uint32_t CellLocator::build(uint32_t begin, uint32_t end, std::vector<Eigen::Vec
 CellLocation CellLocator::evaluate(uint32_t cell, const Eigen::Vector3d& X) const {
   CellLocation location;
   location.cell = cell;
-  location.local = cellLocalCoordinates(mesh_, cell, X);
   const bool tetrahedron = mesh_.isTetrahedron(cell);
+  location.local =
+      tetrahedron
+          ? Eigen::Vector3d(tetInverse_[cell] *
+                            (X - mesh_.positions.row(mesh_.cells.row(cell)[0]).transpose()))
+          : cellLocalCoordinates(mesh_, cell, X);
   location.inside = localExcursion(tetrahedron, location.local) <= kInsideTolerance;
   location.distance =
       location.inside

@@ -44,6 +44,7 @@ class CellLocator {
 
   const VolumeMesh& mesh_;
   std::vector<Eigen::AlignedBox3d> cellBoxes_;
+  std::vector<Eigen::Matrix3d> tetInverse_;  ///< V^-1 per tetrahedron (identity for hexahedra)
   std::vector<uint32_t> order_;  ///< cell ids, grouped by leaf
   std::vector<Node> nodes_;
 };

@@ -12,8 +12,10 @@
 namespace sculpt {
 
 MethodErrors measureInterpolationErrors(const VolumeMesh& mesh, const Points& testPoints,
-                                        const AnalyticDeformation& phi) {
-  EmbeddedDeformer deformer(mesh, testPoints);
+                                        const AnalyticDeformation& phi, double eps) {
+  DeformerSettings settings;
+  settings.eps = eps;
+  EmbeddedDeformer deformer(mesh, testPoints, settings);
   Points nodes(mesh.positions.rows(), 3);
   for (Eigen::Index i = 0; i < nodes.rows(); ++i)
     nodes.row(i) = phi(mesh.positions.row(i).transpose()).transpose();
@@ -43,7 +45,7 @@ Eigen::Vector3d bendAndTwist(const Eigen::Vector3d& X) {
 }
 
 ConvergenceSeries runConvergenceStudy(StudyCells cells, StudyPlacement placement,
-                                      std::span<const double> spacings) {
+                                      std::span<const double> spacings, double eps) {
   // The test cube's corner is fixed; three layers of cubes surround it (none above it in the
   // surface case), so the mesh shrinks with h around fixed test points.
   const Eigen::Vector3d P0(0.1, 0.2, 0.3);
@@ -69,7 +71,7 @@ ConvergenceSeries runConvergenceStudy(StudyCells cells, StudyPlacement placement
     ConvergenceRow row;
     row.spacing = h;
     row.meanEdge = meanEdgeLength(mesh);
-    row.errors = measureInterpolationErrors(mesh, testPoints, bendAndTwist);
+    row.errors = measureInterpolationErrors(mesh, testPoints, bendAndTwist, eps);
     series.rows.push_back(row);
   }
   std::vector<double> x, y;

@@ -31,7 +31,7 @@ struct MethodErrors {
 /// Deforms `mesh` by phi at its nodes and measures each method at `testPoints` (double precision,
 /// default settings: eps = 1, attribute radius 1.5 x mean edge length).
 MethodErrors measureInterpolationErrors(const VolumeMesh& mesh, const Points& testPoints,
-                                        const AnalyticDeformation& phi);
+                                        const AnalyticDeformation& phi, double eps = 1.0);
 
 /// The smooth test deformation of the convergence experiment: a bend of radius 1.5 about the
 /// y axis followed by a twist about z of 0.8 rad per unit length.
@@ -59,8 +59,9 @@ struct ConvergenceSeries {
 /// The convergence experiment: a lattice of cubes of edge h (split into 6 tetrahedra each, or
 /// hexahedra) translated so that a fixed test cube [P0, P0 + h]^3 keeps 25 test points at the
 /// same local positions for every h; bendAndTwist as the deformation.
+/// `eps` is the regulariser of the node gradients (default 1).
 ConvergenceSeries runConvergenceStudy(StudyCells cells, StudyPlacement placement,
-                                      std::span<const double> spacings);
+                                      std::span<const double> spacings, double eps = 1.0);
 
 enum class KelvinletBrush { Grab, Twist, Pinch };
 

@@ -1,3 +1,6 @@
+// [SECTION] index: cell types; big-endian numbers; VtkReader (header, POINTS, CELLS in both
+// layouts, CELL_TYPES, skipped FIELD/METADATA, building the mesh); the writer.
+
 #include "io/vtk_volume_mesh.h"
 
 #include <array>

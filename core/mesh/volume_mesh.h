@@ -41,8 +41,9 @@ struct VolumeMesh {
 /// a neighbour sharing the quadrilateral cuts it the same way.
 void splitPyramid(VolumeMesh& mesh, const std::array<uint32_t, 5>& nodes);
 
-/// Appends the three tetrahedra of a wedge (triangle 0,1,2 and triangle 3,4,5 above it, VTK and
-/// Gmsh order). Each quadrilateral side is cut along the diagonal through its smallest node id.
+/// Appends the three tetrahedra of a wedge: triangle 0,1,2 counter-clockwise seen from triangle
+/// 3,4,5 above it (Gmsh order; a VTK wedge lists 0,1,2 the other way round and must be reordered
+/// to 0,2,1,3,5,4). Each quadrilateral side is cut along the diagonal through its smallest id.
 void splitWedge(VolumeMesh& mesh, const std::array<uint32_t, 6>& nodes);
 
 /// Signed volume of tetrahedron `cell` (det/6); positive for a correctly oriented cell.

@@ -190,7 +190,7 @@ TEST(KelvinletTest, SpecialFormsMatchGeneralAffine) {
          RegularizedKelvinlet::affine(kCentre, pinchLoad(), kEps, material)},
     };
     for (const auto& [special, general] : pairs) {
-      for (const Vector3d& X : samplePoints(30, 0.0, 20.0)) {
+      for (const Vector3d& X : samplePoints(30, 0.05, 20.0)) {
         const Vector3d expected = general.displacement(X);
         const double error = (special.displacement(X) - expected).norm() / expected.norm();
         worst = std::max(worst, error);
@@ -228,7 +228,7 @@ TEST(KelvinletTest, DisplacementGradientMatchesFiniteDifferences) {
   for (const KelvinletMaterial& material : materials()) {
     for (const NamedKelvinlet& nk : allKinds(material)) {
       const Field u = [&](const Vector3d& p) { return nk.kelvinlet.displacement(p); };
-      for (const Vector3d& X : samplePoints(25, 0.0, 10.0)) {
+      for (const Vector3d& X : samplePoints(25, 0.05, 10.0)) {
         const Matrix3d expected = gradientFD(u, X, 1e-4 * kEps);
         const double error =
             (nk.kelvinlet.displacementGradient(X) - expected).norm() / expected.norm();
@@ -275,8 +275,12 @@ TEST(KelvinletTest, TwistIsDivergenceFree) {
       const Matrix3d G = gradientFD(u, X, 1e-4 * kEps);
       EXPECT_LT(std::abs(G.trace()), 1e-8 * G.norm());
       EXPECT_LT(std::abs(twist.displacementGradient(X).trace()), 1e-14 * G.norm());
-      const Matrix3d H = gradientFD(v, X, 1e-4 * kEps);
-      EXPECT_GT(std::abs(H.trace()), 1e-3 * H.norm());
+      // The scale field is a dilatation inside the brush (outside it tends to the
+      // divergence-free r / |r|^3), so it shows the check can fail
+      if ((X - kCentre).norm() < kEps) {
+        const Matrix3d H = gradientFD(v, X, 1e-4 * kEps);
+        EXPECT_GT(std::abs(H.trace()), 0.1 * H.norm());
+      }
     }
   }
 }
@@ -290,7 +294,7 @@ TEST(KelvinletTest, AffineIsDerivativeOfGrab) {
       if (nk.name == "grab") continue;
       const Matrix3d& F = nk.load;
       const double h = 1e-4 * kEps;
-      for (const Vector3d& X : samplePoints(25, 0.0, 10.0)) {
+      for (const Vector3d& X : samplePoints(25, 0.05, 10.0)) {
         Vector3d expected = Vector3d::Zero();
         for (int j = 0; j < 3; ++j) {
           const auto grab = RegularizedKelvinlet::grab(kCentre, F.col(j), kEps, material);
