@@ -11,6 +11,8 @@ int runSubdivideCommand(const std::vector<std::string>& args);
 int runBenchCommand(const std::vector<std::string>& args);
 int runStaticCommand(const std::vector<std::string>& args);
 int runSimulateCommand(const std::vector<std::string>& args);
+int runDeformCommand(const std::vector<std::string>& args);
+int runStudyCommand(const std::vector<std::string>& args);
 
 /// One-paragraph usage of each subcommand (shown by `--help` and in the main usage).
 extern const char* const kInfoUsage;
@@ -18,5 +20,7 @@ extern const char* const kSubdivideUsage;
 extern const char* const kBenchUsage;
 extern const char* const kStaticUsage;
 extern const char* const kSimulateUsage;
+extern const char* const kDeformUsage;
+extern const char* const kStudyUsage;
 
 }  // namespace sculpt::cli

@@ -19,7 +19,9 @@ void printUsage(std::ostream& out) {
       << sculpt::cli::kSubdivideUsage << '\n'
       << sculpt::cli::kStaticUsage << '\n'
       << sculpt::cli::kSimulateUsage << '\n'
+      << sculpt::cli::kDeformUsage << '\n'
       << sculpt::cli::kBenchUsage << '\n'
+      << sculpt::cli::kStudyUsage << '\n'
       << "Run 'sculpt-cli <command> --help' for one command. Exit code 0 on success, 1 when a\n"
          "solve did not converge or a step failed (static, simulate, bench), 2 on bad input or\n"
          "usage (with one line on stderr naming the file and the problem).\n";
@@ -42,6 +44,8 @@ int dispatch(const std::vector<std::string>& args) {
   if (command == "bench") return runBenchCommand(rest);
   if (command == "static") return runStaticCommand(rest);
   if (command == "simulate") return runSimulateCommand(rest);
+  if (command == "deform") return runDeformCommand(rest);
+  if (command == "study") return runStudyCommand(rest);
   return printError("unknown command '" + command + "' (run 'sculpt-cli --help')");
 }
 

@@ -1,11 +1,10 @@
 #include "embed/kelvinlet.h"
 
+#include <Eigen/Dense>
 #include <cmath>
 #include <numbers>
 #include <stdexcept>
 #include <string>
-
-#include <Eigen/Dense>
 
 namespace sculpt {
 
@@ -80,8 +79,9 @@ RegularizedKelvinlet RegularizedKelvinlet::pinch(const Vector3d& centre,
   requireFinite(F.allFinite(), "pinch matrix must be finite");
   const double tolerance = 1e-12 * F.norm();
   if ((F - F.transpose()).norm() > tolerance || std::abs(F.trace()) > tolerance) {
-    throw std::invalid_argument("RegularizedKelvinlet::pinch: the matrix must be symmetric with "
-                                "zero trace");
+    throw std::invalid_argument(
+        "RegularizedKelvinlet::pinch: the matrix must be symmetric with "
+        "zero trace");
   }
   RegularizedKelvinlet k(Kind::kPinch, centre, eps, material);
   k.F_ = F;

@@ -19,7 +19,7 @@ namespace sculpt {
 
 /// Material of the infinite medium. The shear modulus only scales the amplitude (u ~ 1 / mu).
 struct KelvinletMaterial {
-  double shearModulus = 1.0;  ///< mu, > 0 (any consistent unit, Pa in SI).
+  double shearModulus = 1.0;   ///< mu, > 0 (any consistent unit, Pa in SI).
   double poissonRatio = 0.45;  ///< nu, in (-1, 0.5).
 };
 

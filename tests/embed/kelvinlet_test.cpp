@@ -5,6 +5,7 @@
 
 #include <gtest/gtest.h>
 
+#include <Eigen/Dense>
 #include <algorithm>
 #include <array>
 #include <cmath>
@@ -15,8 +16,6 @@
 #include <stdexcept>
 #include <string>
 #include <vector>
-
-#include <Eigen/Dense>
 
 namespace sculpt {
 namespace {
@@ -59,8 +58,7 @@ std::vector<NamedKelvinlet> allKinds(KelvinletMaterial material) {
       {"grab", RegularizedKelvinlet::grab(kCentre, Vector3d(0.3, -1.2, 0.7), kEps, material),
        Matrix3d::Zero()},
       {"twist", RegularizedKelvinlet::twist(kCentre, q, kEps, material), crossMatrix(q)},
-      {"scale", RegularizedKelvinlet::scale(kCentre, s, kEps, material),
-       s * Matrix3d::Identity()},
+      {"scale", RegularizedKelvinlet::scale(kCentre, s, kEps, material), s * Matrix3d::Identity()},
       {"pinch", RegularizedKelvinlet::pinch(kCentre, pinchLoad(), kEps, material), pinchLoad()},
       {"affine", RegularizedKelvinlet::affine(kCentre, generalLoad(), kEps, material),
        generalLoad()},
@@ -105,10 +103,10 @@ std::array<Matrix3d, 3> hessianFD(const Field& u, const Vector3d& X, double h) {
     for (int k = j; k < 3; ++k) {
       const Vector3d ej = h * Vector3d::Unit(j);
       const Vector3d ek = h * Vector3d::Unit(k);
-      const Vector3d d = j == k ? Vector3d((u(X + ej) - 2.0 * u0 + u(X - ej)) / (h * h))
-                                : Vector3d((u(X + ej + ek) - u(X + ej - ek) - u(X - ej + ek) +
-                                            u(X - ej - ek)) /
-                                           (4.0 * h * h));
+      const Vector3d d =
+          j == k ? Vector3d((u(X + ej) - 2.0 * u0 + u(X - ej)) / (h * h))
+                 : Vector3d((u(X + ej + ek) - u(X + ej - ek) - u(X - ej + ek) + u(X - ej - ek)) /
+                            (4.0 * h * h));
       for (int i = 0; i < 3; ++i) H[std::size_t(i)](j, k) = H[std::size_t(i)](k, j) = d(i);
     }
   }
@@ -131,8 +129,8 @@ NavierTerms navierTermsFD(const RegularizedKelvinlet& k, const Vector3d& X) {
     const Matrix3d H = (4.0 * fine[std::size_t(i)] - coarse[std::size_t(i)]) / 3.0;
     lap(i) = H.trace();
     gradDiv(i) = 0.0;
-    for (int m = 0; m < 3; ++m) gradDiv(i) += (4.0 * fine[std::size_t(m)](i, m) -
-                                               coarse[std::size_t(m)](i, m)) / 3.0;
+    for (int m = 0; m < 3; ++m)
+      gradDiv(i) += (4.0 * fine[std::size_t(m)](i, m) - coarse[std::size_t(m)](i, m)) / 3.0;
   }
   const double mu = k.material().shearModulus;
   const double nu = k.material().poissonRatio;
@@ -151,9 +149,9 @@ TEST(KelvinletTest, NavierEquationHoldsWithItsBodyForce) {
         const double scale = std::max({t.shear.norm(), t.dilatation.norm(), b.norm()});
         const double residual = (t.shear + t.dilatation + b).norm() / scale;
         worst = std::max(worst, residual);
-        EXPECT_LT(residual, tolerance) << nk.name << " nu=" << material.poissonRatio
-                                       << " mu=" << material.shearModulus << " at |r|="
-                                       << (X - kCentre).norm() / kEps << " eps";
+        EXPECT_LT(residual, tolerance)
+            << nk.name << " nu=" << material.poissonRatio << " mu=" << material.shearModulus
+            << " at |r|=" << (X - kCentre).norm() / kEps << " eps";
         // The load is not negligible there, so a wrong body force cannot hide in the tolerance
         EXPECT_GT(b.norm(), 1e-3 * scale) << nk.name;
       }
@@ -245,10 +243,11 @@ TEST(KelvinletTest, DisplacementGradientMatchesFiniteDifferences) {
 // r = 10..100 eps along several directions.
 TEST(KelvinletTest, FarFieldDecayExponents) {
   const KelvinletMaterial material{1.0, 0.45};
+  double worst = 0.0;
   for (const NamedKelvinlet& nk : allKinds(material)) {
     const double expectedSlope = nk.name == "grab" ? -1.0 : -2.0;
-    for (const Vector3d& direction :
-         {Vector3d(1, 0, 0), Vector3d(0.3, -0.8, 0.5).normalized(), Vector3d(-1, 1, 1).normalized()}) {
+    for (const Vector3d& direction : {Vector3d(1, 0, 0), Vector3d(0.3, -0.8, 0.5).normalized(),
+                                      Vector3d(-1, 1, 1).normalized()}) {
       double sx = 0, sy = 0, sxx = 0, sxy = 0;
       const int n = 21;
       for (int i = 0; i < n; ++i) {
@@ -258,16 +257,18 @@ TEST(KelvinletTest, FarFieldDecayExponents) {
         sx += x, sy += y, sxx += x * x, sxy += x * y;
       }
       const double slope = (n * sxy - sx * sy) / (n * sxx - sx * sx);
+      worst = std::max(worst, std::abs(slope - expectedSlope));
       EXPECT_NEAR(slope, expectedSlope, 0.02) << nk.name << " direction " << direction.transpose();
     }
   }
+  std::printf("[ measured ] worst decay-exponent deviation %.3g (tolerance 0.02)\n", worst);
 }
 
 // (7) The twist field is divergence-free (volume-preserving to first order); scale is not.
 TEST(KelvinletTest, TwistIsDivergenceFree) {
   for (const KelvinletMaterial& material : materials()) {
-    const auto twist = RegularizedKelvinlet::twist(kCentre, Vector3d(0.4, 0.9, -0.2), kEps,
-                                                   material);
+    const auto twist =
+        RegularizedKelvinlet::twist(kCentre, Vector3d(0.4, 0.9, -0.2), kEps, material);
     const auto scale = RegularizedKelvinlet::scale(kCentre, 0.8, kEps, material);
     const Field u = [&](const Vector3d& p) { return twist.displacement(p); };
     const Field v = [&](const Vector3d& p) { return scale.displacement(p); };
