@@ -81,6 +81,9 @@ EmbeddedDeformer::EmbeddedDeformer(VolumeMesh rest, const Points& points,
                               static_cast<uint32_t>(keyed[i].first & 0xffffffffu)});
       tetEdges_[keyed[i].second] = static_cast<uint32_t>(edgeNodes_.size() - 1);
     }
+    edgeVectors_.reserve(edgeNodes_.size());
+    for (const auto& [a, b] : edgeNodes_)
+      edgeVectors_.push_back((rest_.positions.row(b) - rest_.positions.row(a)).transpose());
   }
 
   // Sort points by cell (counting sort keeps input order within a cell).
@@ -162,8 +165,8 @@ void EmbeddedDeformer::fillCoefficients(Coefficients<T>& coefficients) const {
   parallelChunks(numEdges, 8192, [&](uint32_t begin, uint32_t end, unsigned) {
     for (uint32_t e = begin; e < end; ++e) {
       const auto [a, b] = edgeNodes_[e];
-      const Eigen::Vector3d edge = (rest_.positions.row(b) - rest_.positions.row(a)).transpose();
-      const Eigen::Vector3d value = alpha * ((nodeGradients_[a] - nodeGradients_[b]) * edge);
+      const Eigen::Vector3d value =
+          alpha * ((nodeGradients_[a] - nodeGradients_[b]) * edgeVectors_[e]);
       for (int d = 0; d < 3; ++d) coefficients.edges[3 * e + d] = static_cast<T>(value[d]);
     }
   });

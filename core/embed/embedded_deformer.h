@@ -104,6 +104,7 @@ class EmbeddedDeformer {
   double attributeRadius_ = 0.0;
   CompressedRows<NodeWeight> attributeWeights_;  ///< rows in sorted order
   std::vector<std::array<uint32_t, 2>> edgeNodes_;  ///< distinct tetrahedron edges
+  std::vector<Eigen::Vector3d> edgeVectors_;        ///< X_b - X_a per edge (rest)
   std::vector<uint32_t> cellSlot_;   ///< tetrahedron: first of its 6 entries in tetEdges_;
                                      ///< hexahedron: its index among the hexahedra
   std::vector<uint32_t> tetEdges_;   ///< per tetrahedron, its edges in kTetPairs order
