@@ -2,6 +2,7 @@
 
 #include <algorithm>
 #include <cmath>
+#include <utility>
 
 #include <Eigen/LU>
 
@@ -67,33 +68,46 @@ Eigen::Vector3d cellLocalCoordinates(const VolumeMesh& mesh, uint32_t cell,
     const Eigen::Vector3d X0 = mesh.positions.row(mesh.cells.row(cell)[0]).transpose();
     return cellJacobian(mesh, cell, X0).partialPivLu().solve(X - X0);
   }
-  // Newton on X(xi) = X from the centre. Steps are damped so that the residual never grows: far
-  // outside a distorted cell the trilinear map can fold, and the iteration must still stop with
-  // finite coordinates.
-  Eigen::Vector3d xi = cellCentreCoordinates(false);
-  Eigen::Vector3d residual = cellPoint(mesh, cell, xi) - X;
-  const double scale = (cellJacobian(mesh, cell, xi)).norm();
-  for (int iteration = 0; iteration < 40 && residual.norm() > 1e-14 * scale; ++iteration) {
-    const Eigen::Matrix3d J = cellJacobian(mesh, cell, xi);
-    const Eigen::FullPivLU<Eigen::Matrix3d> lu(J);
-    if (!lu.isInvertible()) break;
-    const Eigen::Vector3d step = lu.solve(residual);
-    if (!step.allFinite()) break;
-    double damping = 1.0;
-    bool improved = false;
-    for (int halving = 0; halving < 20; ++halving, damping *= 0.5) {
-      const Eigen::Vector3d trial = xi - damping * step;
-      const Eigen::Vector3d trialResidual = cellPoint(mesh, cell, trial) - X;
-      if (trialResidual.norm() < residual.norm()) {
-        xi = trial;
-        residual = trialResidual;
-        improved = true;
-        break;
+  // Newton on X(xi) = X. Steps are damped so that the residual never grows: far outside a
+  // distorted cell the trilinear map can fold, and the iteration must still stop with finite
+  // coordinates. Started from the centre; when that stalls (points well outside), restarted from
+  // the corners and from farther out along the stalled direction, keeping the best.
+  const double scale = cellJacobian(mesh, cell, cellCentreCoordinates(false)).norm();
+  const auto newton = [&](Eigen::Vector3d xi) {
+    Eigen::Vector3d residual = cellPoint(mesh, cell, xi) - X;
+    for (int iteration = 0; iteration < 50 && residual.norm() > 1e-14 * scale; ++iteration) {
+      const Eigen::FullPivLU<Eigen::Matrix3d> lu(cellJacobian(mesh, cell, xi));
+      if (!lu.isInvertible()) break;
+      const Eigen::Vector3d step = lu.solve(residual);
+      if (!step.allFinite()) break;
+      double damping = 1.0;
+      bool improved = false;
+      for (int halving = 0; halving < 30; ++halving, damping *= 0.5) {
+        const Eigen::Vector3d trial = xi - damping * step;
+        const Eigen::Vector3d trialResidual = cellPoint(mesh, cell, trial) - X;
+        if (trialResidual.norm() < residual.norm()) {
+          xi = trial;
+          residual = trialResidual;
+          improved = true;
+          break;
+        }
       }
+      if (!improved) break;
     }
-    if (!improved) break;
+    return std::pair{xi, residual.norm()};
+  };
+  auto [best, bestResidual] = newton(cellCentreCoordinates(false));
+  if (bestResidual <= 1e-10 * scale) return best;
+  const Eigen::Vector3d stalled = best;
+  for (int start = 0; start < 10 && bestResidual > 1e-10 * scale; ++start) {
+    const Eigen::Vector3d xi0 =
+        start < 8 ? Eigen::Vector3d(kTrilinearCorner[start][0], kTrilinearCorner[start][1],
+                                    kTrilinearCorner[start][2])
+                  : Eigen::Vector3d::Constant(0.5) + (start - 6) * (stalled - Eigen::Vector3d::Constant(0.5));
+    const auto [xi, residual] = newton(xi0);
+    if (residual < bestResidual) best = xi, bestResidual = residual;
   }
-  return xi;
+  return best;
 }
 
 Eigen::Vector3d cellCentroid(const VolumeMesh& mesh, uint32_t cell) {

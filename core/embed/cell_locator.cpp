@@ -81,10 +81,19 @@ CellLocation CellLocator::evaluate(uint32_t cell, const Eigen::Vector3d& X) cons
                             (X - mesh_.positions.row(mesh_.cells.row(cell)[0]).transpose()))
           : cellLocalCoordinates(mesh_, cell, X);
   location.inside = localExcursion(tetrahedron, location.local) <= kInsideTolerance;
+  if (location.inside) return location;
+  if (!tetrahedron) {
+    const Eigen::Vector3d residual = X - cellPoint(mesh_, cell, location.local);
+    const double scale = cellBoxes_[cell].sizes().norm();
+    if (residual.norm() > 1e-9 * scale) {
+      location.local = clampToCell(false, location.local);
+      location.offset = X - cellPoint(mesh_, cell, location.local);
+      location.distance = location.offset.norm();
+      return location;
+    }
+  }
   location.distance =
-      location.inside
-          ? 0.0
-          : (cellPoint(mesh_, cell, clampToCell(tetrahedron, location.local)) - X).norm();
+      (cellPoint(mesh_, cell, clampToCell(tetrahedron, location.local)) - X).norm();
   return location;
 }
 

@@ -20,6 +20,10 @@ struct CellLocation {
   Eigen::Vector3d local = Eigen::Vector3d::Zero();
   bool inside = false;
   double distance = 0.0;
+  /// X - X(local): zero except far outside a distorted hexahedron, whose trilinear map may have
+  /// no preimage there; `local` is then the nearest point of the cell and the deformer extends
+  /// the map affinely by its gradient times this offset.
+  Eigen::Vector3d offset = Eigen::Vector3d::Zero();
 };
 
 class CellLocator {

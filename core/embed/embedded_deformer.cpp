@@ -97,6 +97,11 @@ EmbeddedDeformer::EmbeddedDeformer(VolumeMesh rest, const Points& points,
     std::vector<uint32_t> cursor(cellPointBegin_.begin(), cellPointBegin_.end() - 1);
     for (uint32_t p = 0; p < n; ++p) sortedToInput_[cursor[embedding_.cells[p]]++] = p;
   }
+  {
+    std::vector<uint32_t> inputToSorted(n);
+    for (uint32_t k = 0; k < n; ++k) inputToSorted[sortedToInput_[k]] = k;
+    for (uint32_t p : embedding_.offsetPoints) offsetSorted_.push_back(inputToSorted[p]);
+  }
   for (int d = 0; d < 3; ++d) {
     localF_[d].resize(n);
     localD_[d].resize(n);
@@ -324,8 +329,22 @@ void EmbeddedDeformer::evaluateAll(const Coefficients<T>& coefficients, T* x, T*
   });
 }
 
+template <typename T>
+void EmbeddedDeformer::applyOffsets(T* x, T* y, T* z) const {
+  if (method_ == InterpolationMethod::Attribute) return;  // it moves X itself, offset included
+  for (size_t k = 0; k < offsetSorted_.size(); ++k) {
+    const Eigen::Vector3d correction =
+        gradientAt(embedding_.offsetPoints[k]) * embedding_.offsetVectors[k];
+    const uint32_t s = offsetSorted_[k];
+    x[s] += static_cast<T>(correction[0]);
+    y[s] += static_cast<T>(correction[1]);
+    z[s] += static_cast<T>(correction[2]);
+  }
+}
+
 void EmbeddedDeformer::evaluateSorted(float* x, float* y, float* z) const {
   evaluateAll(coefficientsF_, x, y, z);
+  applyOffsets(x, y, z);
 }
 
 Points EmbeddedDeformer::positions() const {
@@ -334,6 +353,7 @@ Points EmbeddedDeformer::positions() const {
   fillCoefficients(coefficients);
   std::vector<double> x(n), y(n), z(n);
   evaluateAll(coefficients, x.data(), y.data(), z.data());
+  applyOffsets(x.data(), y.data(), z.data());
   Points out(n, 3);
   for (uint32_t k = 0; k < n; ++k) out.row(sortedToInput_[k]) << x[k], y[k], z[k];
   return out;

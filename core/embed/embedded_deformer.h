@@ -96,6 +96,9 @@ class EmbeddedDeformer {
                      T* x, T* y, T* z) const;
   template <typename T>
   void evaluateAll(const Coefficients<T>& coefficients, T* x, T* y, T* z) const;
+  /// Adds gradient x offset for the points of embedding().offsetPoints (sorted-order outputs).
+  template <typename T>
+  void applyOffsets(T* x, T* y, T* z) const;
 
   VolumeMesh rest_;
   Embedding embedding_;
@@ -111,6 +114,7 @@ class EmbeddedDeformer {
 
   // Points sorted by cell.
   std::vector<uint32_t> sortedToInput_;
+  std::vector<uint32_t> offsetSorted_;          ///< sorted index of each offset point
   std::vector<uint32_t> cellPointBegin_;        ///< #cells+1
   std::vector<uint32_t> workerCellBegin_;       ///< cell ranges of equal point counts per worker
   std::vector<float> localF_[3];                ///< sorted local coordinates

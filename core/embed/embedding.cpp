@@ -36,6 +36,11 @@ Embedding embedPoints(const VolumeMesh& mesh, const Points& points, ProgressRepo
         const CellLocation location = locator.locate(points.row(p).transpose());
         embedding.cells[p] = location.cell;
         embedding.local.row(p) = location.local.transpose();
+        if (location.offset.squaredNorm() > 0.0) {
+          const std::lock_guard lock(progressMutex);
+          embedding.offsetPoints.push_back(p);
+          embedding.offsetVectors.push_back(location.offset);
+        }
         if (!location.inside) {
           ++outside[worker];
           farthest[worker] = std::max(farthest[worker], location.distance);
@@ -49,6 +54,20 @@ Embedding embedPoints(const VolumeMesh& mesh, const Points& points, ProgressRepo
       }
     }
   });
+  // Workers append in any order; keep the list sorted by point for reproducible output.
+  std::vector<size_t> order(embedding.offsetPoints.size());
+  for (size_t k = 0; k < order.size(); ++k) order[k] = k;
+  std::sort(order.begin(), order.end(), [&](size_t a, size_t b) {
+    return embedding.offsetPoints[a] < embedding.offsetPoints[b];
+  });
+  std::vector<uint32_t> points2;
+  std::vector<Eigen::Vector3d> vectors2;
+  for (size_t k : order) {
+    points2.push_back(embedding.offsetPoints[k]);
+    vectors2.push_back(embedding.offsetVectors[k]);
+  }
+  embedding.offsetPoints = std::move(points2);
+  embedding.offsetVectors = std::move(vectors2);
   for (size_t w = 0; w < outside.size(); ++w) {
     embedding.outsideCount += outside[w];
     embedding.maxOutsideDistance = std::max(embedding.maxOutsideDistance, farthest[w]);

@@ -16,6 +16,10 @@ struct Embedding {
   std::vector<uint32_t> cells;  ///< per point, in input order
   Points local;                 ///< per point: (beta1, beta2, beta3) or trilinear (s, t, u)
   uint32_t outsideCount = 0;    ///< points that lie outside every cell
+  /// Points far outside a distorted hexahedron (see CellLocation::offset): their local
+  /// coordinates are the nearest point of the cell, and offsetVectors[k] = X - X(local).
+  std::vector<uint32_t> offsetPoints;
+  std::vector<Eigen::Vector3d> offsetVectors;
   double maxOutsideDistance = 0.0;  ///< largest distance of such a point to its cell (upper bound)
 
   uint32_t numPoints() const { return static_cast<uint32_t>(cells.size()); }
