@@ -9,6 +9,8 @@
 #   out/<name>_level2.vtk            the level-2 cell complex (open it in ParaView)
 #   out/<name>_level2_boundary.obj   its boundary surface
 #   out/<name>_sag.vtk               the deformed control mesh with its displacement field
+#   out/<name>_sag_surface.obj       the boundary surface carried by the sagging control mesh
+#                                    with Phong deformation (sculpt-cli deform)
 set -euo pipefail
 
 ROOT="$(cd "$(dirname "${BASH_SOURCE[0]}")/.." && pwd)"
@@ -64,7 +66,20 @@ FIX="$(python3 -c 'import json,sys; y=min(v[1] for v in json.load(open(sys.argv[
 echo "\$ $BUILD_DIR/bin/sculpt-cli simulate $ASSET --levels $LEVELS --gravity --E 2e5 --fix=$FIX --dt 0.02 --steps 50 --out $SIM"
 "$CLI" simulate "$ASSET" --levels "$LEVELS" --gravity --E 2e5 --fix="$FIX" --dt 0.02 --steps 50 --out "$SIM"
 echo
+# The boundary surface carried by the sagging control mesh as a cage (Phong deformation). Only
+# meshes whose control cells are hexahedra or tetrahedra can serve as a cage.
+REST="out/${NAME}_rest.vtk"
+SURFACE="out/${NAME}_sag_surface.obj"
+"$CLI" subdivide "$ASSET" --levels 0 --out "$REST" > /dev/null
+echo "\$ $BUILD_DIR/bin/sculpt-cli deform --rest $REST --deformed $SIM --surface $OBJ --method phong --out $SURFACE"
+if ! "$CLI" deform --rest "$REST" --deformed "$SIM" --surface "$OBJ" --method phong --out "$SURFACE"; then
+  echo "(skipped: this control mesh has cells that are neither hexahedra nor tetrahedra)"
+  SURFACE=""
+fi
+echo
 echo "wrote:"
 echo "  $ROOT/$VTK   (level-$LEVELS cell complex, legacy VTK: open it in ParaView)"
 echo "  $ROOT/$OBJ   (its boundary surface, OBJ)"
 echo "  $ROOT/$SIM   (the control mesh after 1 s under gravity, with its displacement field)"
+[[ -n "$SURFACE" ]] && echo "  $ROOT/$SURFACE   (the boundary surface deformed with the control mesh, OBJ)"
+true
