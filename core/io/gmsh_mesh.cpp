@@ -226,6 +226,21 @@ class GmshReader {
     for (size_t k = 0; k < extraValues; ++k) real(node);  // parametric coordinates: not needed
   }
 
+  struct BlockHeader41 {
+    uint64_t numBlocks;
+    uint64_t numItems;
+  };
+  /// The first line of a 4.1 $Nodes or $Elements section, "numEntityBlocks numItems minTag
+  /// maxTag", where `item` ("node", "element") names the entries; the tag range is not needed.
+  BlockHeader41 readBlockHeader41(const std::string& item) {
+    const uint64_t numBlocks = scanner_.count("the number of " + item + " blocks");
+    const uint64_t numItems = scanner_.count("the number of " + item + "s");
+    scanner_.count("the smallest " + item + " tag");
+    scanner_.count("the largest " + item + " tag");
+    scanner_.checkCount(numBlocks, 8, item + " blocks");
+    return {numBlocks, numItems};
+  }
+
   // "numNodes", then per node "tag x y z".
   void readNodes22() {
     const uint64_t numNodes = scanner_.count("the number of nodes");
@@ -240,11 +255,7 @@ class GmshReader {
   // "numEntityBlocks numNodes minTag maxTag", then per block "entityDim entityTag parametric n",
   // the n tags, then the n coordinate rows (x y z, plus entityDim parametric values if asked).
   void readNodes41() {
-    const uint64_t numBlocks = scanner_.count("the number of node blocks");
-    const uint64_t numNodes = scanner_.count("the number of nodes");
-    scanner_.count("the smallest node tag");
-    scanner_.count("the largest node tag");
-    scanner_.checkCount(numBlocks, 8, "node blocks");
+    const auto [numBlocks, numNodes] = readBlockHeader41("node");
     reserveNodes(numNodes);
     for (uint64_t block = 0; block < numBlocks; ++block) {
       const int64_t dimension = integer("the entity dimension of a node block");
@@ -317,11 +328,7 @@ class GmshReader {
   // "numEntityBlocks numElements minTag maxTag", then per block "entityDim entityTag type n" and
   // n lines "tag node...".
   void readElements41() {
-    const uint64_t numBlocks = scanner_.count("the number of element blocks");
-    const uint64_t numElements = scanner_.count("the number of elements");
-    scanner_.count("the smallest element tag");
-    scanner_.count("the largest element tag");
-    scanner_.checkCount(numBlocks, 8, "element blocks");
+    const auto [numBlocks, numElements] = readBlockHeader41("element");
     scanner_.checkCount(numElements, 4, "elements");
     uint64_t seen = 0;
     for (uint64_t block = 0; block < numBlocks; ++block) {

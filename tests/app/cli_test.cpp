@@ -2,11 +2,8 @@
 // file, never with a signal; subdivide writes files that load again.
 
 #include <gtest/gtest.h>
-#include <sys/wait.h>
-#include <unistd.h>
 
 #include <filesystem>
-#include <fstream>
 #include <random>
 #include <sstream>
 #include <string>
@@ -15,6 +12,7 @@
 
 #include "io/control_mesh_json.h"
 #include "mesh/validation.h"
+#include "support/cli_fixture.h"
 #include "support/mesh_builders.h"
 
 namespace sculpt {
@@ -22,106 +20,18 @@ namespace {
 
 namespace fs = std::filesystem;
 
-const std::string kCli = SCULPT_BINARY_DIR "/bin/sculpt-cli";
 const std::string kData = SCULPT_SOURCE_DIR "/tests/data/";
 
-struct CliResult {
-  bool signaled = false;
-  int exitCode = -1;
-  std::string out;
-  std::string err;
-  std::vector<std::string> errLines() const {
-    std::vector<std::string> lines;
-    std::istringstream in(err);
-    for (std::string line; std::getline(in, line);) {
-      // Progress lines ("[  0.01 s] ...") are not error reports.
-      if (!line.empty() && line[0] != '[') lines.push_back(line);
-    }
-    return lines;
-  }
-};
+using test::CliResult;
+using test::isMilliseconds;
+using test::keyValues;
+using test::quote;
+using test::readText;
+using test::writeText;
 
-std::string quote(const std::string& text) {
-  std::string quoted = "'";
-  for (char ch : text) quoted += ch == '\'' ? std::string("'\\''") : std::string(1, ch);
-  return quoted + "'";
-}
-
-std::string readText(const fs::path& path) {
-  std::ifstream in(path, std::ios::binary);
-  return {std::istreambuf_iterator<char>(in), std::istreambuf_iterator<char>()};
-}
-
-void writeText(const fs::path& path, const std::string& text) {
-  std::ofstream(path, std::ios::binary) << text;
-}
-
-// "a=1 b=2" as (key, value) pairs; a word without '=' gives an empty key.
-std::vector<std::pair<std::string, std::string>> keyValues(const std::string& line) {
-  std::vector<std::pair<std::string, std::string>> pairs;
-  std::istringstream in(line);
-  for (std::string word; in >> word;) {
-    const size_t eq = word.find('=');
-    if (eq == std::string::npos) {
-      pairs.emplace_back("", word);
-    } else {
-      pairs.emplace_back(word.substr(0, eq), word.substr(eq + 1));
-    }
-  }
-  return pairs;
-}
-
-// Digits, a point, exactly three digits.
-bool isMilliseconds(const std::string& text) {
-  const size_t dot = text.find('.');
-  if (dot == 0 || dot == std::string::npos || text.size() - dot != 4) return false;
-  for (size_t i = 0; i < text.size(); ++i) {
-    if (i != dot && (text[i] < '0' || text[i] > '9')) return false;
-  }
-  return true;
-}
-
-class CliTest : public ::testing::Test {
+class CliTest : public test::CliFixture {
  protected:
-  void SetUp() override {
-    const auto* info = ::testing::UnitTest::GetInstance()->current_test_info();
-    dir_ = fs::temp_directory_path() /
-           ("sculpt_cli_test_" + std::to_string(::getpid()) + "_" + info->name());
-    fs::create_directories(dir_);
-  }
-  void TearDown() override { fs::remove_all(dir_); }
-
-  // Runs sculpt-cli with already-quoted arguments; stdout and stderr are captured apart.
-  CliResult run(const std::string& args) const {
-    const fs::path out = dir_ / "stdout.txt";
-    const fs::path err = dir_ / "stderr.txt";
-    // exec: the shell is replaced by the program, so a crash shows as a signal, not as 128+n.
-    const std::string command =
-        "exec " + quote(kCli) + " " + args + " >" + quote(out) + " 2>" + quote(err);
-    const int status = std::system(command.c_str());
-    CliResult result;
-    result.signaled = WIFSIGNALED(status) || (WIFEXITED(status) && WEXITSTATUS(status) >= 128);
-    if (WIFEXITED(status)) result.exitCode = WEXITSTATUS(status);
-    result.out = readText(out);
-    result.err = readText(err);
-    return result;
-  }
-
-  // Expects exit 2 with exactly one error line that contains `mention`.
-  void expectBadInput(const std::string& args, const std::string& mention) const {
-    SCOPED_TRACE(args);
-    const CliResult result = run(args);
-    EXPECT_FALSE(result.signaled) << result.err;
-    EXPECT_EQ(result.exitCode, 2) << result.err;
-    const auto lines = result.errLines();
-    ASSERT_EQ(lines.size(), 1u) << result.err;
-    EXPECT_EQ(lines[0].rfind("error: ", 0), 0u) << lines[0];
-    EXPECT_NE(lines[0].find(mention), std::string::npos) << lines[0];
-  }
-
-  std::string path(const std::string& name) const { return (dir_ / name).string(); }
-
-  fs::path dir_;
+  CliTest() : CliFixture("sculpt_cli_test_") {}
 };
 
 TEST_F(CliTest, UsageAndBadUsage) {

@@ -4,18 +4,14 @@
 // mismatched meshes, malformed files and points outside the mesh are handled without a crash.
 
 #include <gtest/gtest.h>
-#include <sys/wait.h>
-#include <unistd.h>
 
 #include <algorithm>
 #include <cmath>
 #include <cstdio>
 #include <cstdlib>
 #include <filesystem>
-#include <fstream>
 #include <functional>
 #include <numbers>
-#include <sstream>
 #include <string>
 #include <utility>
 #include <vector>
@@ -28,49 +24,17 @@
 #include "io/vtk_volume_mesh.h"
 #include "mesh/lattice_mesh.h"
 #include "mesh/surface_mesh.h"
+#include "support/cli_fixture.h"
 
 namespace sculpt {
 namespace {
 
 namespace fs = std::filesystem;
 
-const std::string kCli = SCULPT_BINARY_DIR "/bin/sculpt-cli";
-
-struct CliResult {
-  bool signaled = false;
-  int exitCode = -1;
-  std::string out;
-  std::string err;
-  std::vector<std::string> errLines() const {
-    std::vector<std::string> lines;
-    std::istringstream in(err);
-    for (std::string line; std::getline(in, line);)
-      if (!line.empty() && line[0] != '[') lines.push_back(line);
-    return lines;
-  }
-  std::string lastLine() const {
-    std::istringstream in(out);
-    std::string last;
-    for (std::string line; std::getline(in, line);)
-      if (!line.empty()) last = line;
-    return last;
-  }
-};
-
-std::string quote(const std::string& text) {
-  std::string quoted = "'";
-  for (char ch : text) quoted += ch == '\'' ? std::string("'\\''") : std::string(1, ch);
-  return quoted + "'";
-}
-
-std::string readText(const fs::path& path) {
-  std::ifstream in(path, std::ios::binary);
-  return {std::istreambuf_iterator<char>(in), std::istreambuf_iterator<char>()};
-}
-
-void writeText(const fs::path& path, const std::string& text) {
-  std::ofstream(path, std::ios::binary) << text;
-}
+using test::CliResult;
+using test::quote;
+using test::readText;
+using test::writeText;
 
 using Map = std::function<Eigen::Vector3d(const Eigen::Vector3d&)>;
 
@@ -193,42 +157,9 @@ Points mappedPoints(const Points& points, const Map& map) {
   return out;
 }
 
-class DeformCliTest : public ::testing::Test {
+class DeformCliTest : public test::CliFixture {
  protected:
-  void SetUp() override {
-    const auto* info = ::testing::UnitTest::GetInstance()->current_test_info();
-    dir_ = fs::temp_directory_path() /
-           ("sculpt_deform_cli_test_" + std::to_string(::getpid()) + "_" + info->name());
-    fs::create_directories(dir_);
-  }
-  void TearDown() override { fs::remove_all(dir_); }
-
-  CliResult run(const std::string& args) const {
-    const fs::path out = dir_ / "stdout.txt";
-    const fs::path err = dir_ / "stderr.txt";
-    const std::string command =
-        "exec " + quote(kCli) + " " + args + " >" + quote(out) + " 2>" + quote(err);
-    const int status = std::system(command.c_str());
-    CliResult result;
-    result.signaled = WIFSIGNALED(status) || (WIFEXITED(status) && WEXITSTATUS(status) >= 128);
-    if (WIFEXITED(status)) result.exitCode = WEXITSTATUS(status);
-    result.out = readText(out);
-    result.err = readText(err);
-    return result;
-  }
-
-  void expectBadInput(const std::string& args, const std::string& mention) const {
-    SCOPED_TRACE(args);
-    const CliResult result = run(args);
-    EXPECT_FALSE(result.signaled) << result.err;
-    EXPECT_EQ(result.exitCode, 2) << result.err;
-    const auto lines = result.errLines();
-    ASSERT_EQ(lines.size(), 1u) << result.err;
-    EXPECT_EQ(lines[0].rfind("error: ", 0), 0u) << lines[0];
-    EXPECT_NE(lines[0].find(mention), std::string::npos) << lines[0];
-  }
-
-  std::string path(const std::string& name) const { return (dir_ / name).string(); }
+  DeformCliTest() : CliFixture("sculpt_deform_cli_test_") {}
 
   // Writes rest.vtk, the surface (surface.obj) and the rest mesh under `map` as `deformed`.
   void writeScene(const VolumeMesh& rest, const SurfaceMesh& surface, const Map& map,
@@ -255,8 +186,6 @@ class DeformCliTest : public ::testing::Test {
     if (ran.exitCode != 0) return {};
     return readSurfaceFile(path(out)).surface();
   }
-
-  fs::path dir_;
 };
 
 TEST_F(DeformCliTest, HelpListsDeform) {

@@ -3,26 +3,24 @@
 // that bad input is one "error:" line with exit code 2.
 
 #include <gtest/gtest.h>
-#include <sys/wait.h>
-#include <unistd.h>
 
 #include <array>
 #include <cmath>
 #include <cstdlib>
 #include <filesystem>
-#include <fstream>
 #include <map>
 #include <sstream>
 #include <string>
 #include <utility>
 #include <vector>
 
+#include "support/cli_fixture.h"
+
 namespace sculpt {
 namespace {
 
 namespace fs = std::filesystem;
 
-const std::string kCli = SCULPT_BINARY_DIR "/bin/sculpt-cli";
 const std::string kAssets = SCULPT_SOURCE_DIR "/assets/";
 
 // Boxes on the assets. beam.json is [0,10]x[0,1]x[0,1]; block3.json is [0,3]^3.
@@ -31,55 +29,12 @@ const std::string kBeamTip = "9.99,-1,-1,11,2,2";
 const std::string kBlockBottom = "--fix -1,-1,-1,4,0.01,4";  // the 16 control points at y = 0
 const std::string kBlockTop = "-1,2.99,-1,4,4,4";
 
-struct CliResult {
-  bool signaled = false;
-  int exitCode = -1;
-  std::string out;
-  std::string err;
-  // stderr without the progress lines ("[  0.01 s] ...").
-  std::vector<std::string> errLines() const {
-    std::vector<std::string> lines;
-    std::istringstream in(err);
-    for (std::string line; std::getline(in, line);)
-      if (!line.empty() && line[0] != '[') lines.push_back(line);
-    return lines;
-  }
-  std::string lastLine() const {
-    std::istringstream in(out);
-    std::string last;
-    for (std::string line; std::getline(in, line);)
-      if (!line.empty()) last = line;
-    return last;
-  }
-};
-
-std::string quote(const std::string& text) {
-  std::string quoted = "'";
-  for (char ch : text) quoted += ch == '\'' ? std::string("'\\''") : std::string(1, ch);
-  return quoted + "'";
-}
-
-std::string readText(const fs::path& path) {
-  std::ifstream in(path, std::ios::binary);
-  return {std::istreambuf_iterator<char>(in), std::istreambuf_iterator<char>()};
-}
-
-using KeyValues = std::vector<std::pair<std::string, std::string>>;
-
-// "a=1 b=2" as (key, value) pairs; a word without '=' gives an empty key.
-KeyValues keyValues(const std::string& line) {
-  KeyValues pairs;
-  std::istringstream in(line);
-  for (std::string word; in >> word;) {
-    const size_t eq = word.find('=');
-    if (eq == std::string::npos) {
-      pairs.emplace_back("", word);
-    } else {
-      pairs.emplace_back(word.substr(0, eq), word.substr(eq + 1));
-    }
-  }
-  return pairs;
-}
+using test::CliResult;
+using test::isMilliseconds;
+using test::KeyValues;
+using test::keyValues;
+using test::quote;
+using test::readText;
 
 std::vector<std::string> keys(const KeyValues& pairs) {
   std::vector<std::string> names;
@@ -99,15 +54,6 @@ std::map<std::string, double> numbers(const KeyValues& pairs) {
   std::map<std::string, double> values;
   for (const auto& [key, value] : pairs) values[key] = number(value);
   return values;
-}
-
-// Digits, a point, exactly three digits.
-bool isMilliseconds(const std::string& text) {
-  const size_t dot = text.find('.');
-  if (dot == 0 || dot == std::string::npos || text.size() - dot != 4) return false;
-  for (size_t i = 0; i < text.size(); ++i)
-    if (i != dot && (text[i] < '0' || text[i] > '9')) return false;
-  return true;
 }
 
 // The POINT_DATA vector `name` of a legacy VTK file: one row per point; empty when absent.
@@ -145,43 +91,9 @@ bool hasNonFiniteText(const std::string& text) {
   return false;
 }
 
-class FemCliTest : public ::testing::Test {
+class FemCliTest : public test::CliFixture {
  protected:
-  void SetUp() override {
-    const auto* info = ::testing::UnitTest::GetInstance()->current_test_info();
-    dir_ = fs::temp_directory_path() /
-           ("sculpt_fem_cli_test_" + std::to_string(::getpid()) + "_" + info->name());
-    fs::create_directories(dir_);
-  }
-  void TearDown() override { fs::remove_all(dir_); }
-
-  CliResult run(const std::string& args) const {
-    const fs::path out = dir_ / "stdout.txt";
-    const fs::path err = dir_ / "stderr.txt";
-    const std::string command =
-        "exec " + quote(kCli) + " " + args + " >" + quote(out) + " 2>" + quote(err);
-    const int status = std::system(command.c_str());
-    CliResult result;
-    result.signaled = WIFSIGNALED(status) || (WIFEXITED(status) && WEXITSTATUS(status) >= 128);
-    if (WIFEXITED(status)) result.exitCode = WEXITSTATUS(status);
-    result.out = readText(out);
-    result.err = readText(err);
-    return result;
-  }
-
-  // Exit 2 with exactly one "error: " line on stderr that contains `mention`.
-  void expectBadInput(const std::string& args, const std::string& mention) const {
-    SCOPED_TRACE(args);
-    const CliResult result = run(args);
-    EXPECT_FALSE(result.signaled) << result.err;
-    EXPECT_EQ(result.exitCode, 2) << result.err;
-    const auto lines = result.errLines();
-    ASSERT_EQ(lines.size(), 1u) << result.err;
-    EXPECT_EQ(lines[0].rfind("error: ", 0), 0u) << lines[0];
-    EXPECT_NE(lines[0].find(mention), std::string::npos) << lines[0];
-  }
-
-  std::string path(const std::string& name) const { return (dir_ / name).string(); }
+  FemCliTest() : CliFixture("sculpt_fem_cli_test_") {}
 
   // Runs static on the beam (trilinear, root fixed) with the tip force (0, fy, 0); returns
   // max_displacement.
@@ -198,8 +110,6 @@ class FemCliTest : public ::testing::Test {
     if (pairs.empty()) return 0;
     return number(pairs[0].second);
   }
-
-  fs::path dir_;
 };
 
 const std::vector<std::string> kSimulateKeys = {

@@ -63,6 +63,16 @@ Points pointsInCells(const VolumeMesh& mesh, uint32_t perCell, uint32_t seed) {
   return points;
 }
 
+/// How far `to` is from the image of `from` under x -> A x + t: the largest distance between
+/// matching rows.
+double maxAffineError(const Eigen::Matrix3d& A, const Eigen::Vector3d& t, const Points& from,
+                      const Points& to) {
+  double worst = 0.0;
+  for (Eigen::Index p = 0; p < from.rows(); ++p)
+    worst = std::max(worst, (A * from.row(p).transpose() + t - to.row(p).transpose()).norm());
+  return worst;
+}
+
 TEST(PhongProperties, InterpolatesNodePositions) {
   for (const MeshCase& test : testMeshes()) {
     const EmbeddedDeformer deformerTemplate(test.mesh, test.mesh.positions);
@@ -92,10 +102,8 @@ TEST(PhongProperties, AffineInvariance) {
       const Points before = deformer.positions();
       deformer.setFrame(transformed, method);
       const Points after = deformer.positions();
-      double worst = 0.0;
-      for (Eigen::Index p = 0; p < points.rows(); ++p)
-        worst = std::max(worst, (A * before.row(p).transpose() + t - after.row(p).transpose()).norm());
-      EXPECT_LT(worst, 1e-12) << test.name << ' ' << methodName(method);
+      EXPECT_LT(maxAffineError(A, t, before, after), 1e-12)
+          << test.name << ' ' << methodName(method);
     }
   }
 }
@@ -116,10 +124,8 @@ TEST(PhongProperties, ConstantGradientsReduceToLinearExactly) {
     for (InterpolationMethod method : kCellMethods) {
       deformer.setFrame(deformed, method);
       const Points result = deformer.positions();
-      double worst = 0.0;
-      for (Eigen::Index p = 0; p < points.rows(); ++p)
-        worst = std::max(worst, (A * points.row(p).transpose() + t - result.row(p).transpose()).norm());
-      EXPECT_LT(worst, 1e-12) << test.name << ' ' << methodName(method);
+      EXPECT_LT(maxAffineError(A, t, points, result), 1e-12)
+          << test.name << ' ' << methodName(method);
     }
   }
 }
