@@ -315,7 +315,9 @@ int deformCommand(const CliArgs& args, std::string& file) {
                 << " -> " << outPath << '\n';
 
     file = deformedPath;
-    const VolumeMesh deformed = readVolumeMesh(deformedPath);
+    // A simulation frame may contain inverted cells; the deformer copes, so only its structure
+    // is checked (and below, that it has the rest mesh's nodes and cells).
+    const VolumeMesh deformed = readVolumeMesh(deformedPath, CellShapeCheck::Skipped);
     checkSameMesh(deformer.rest(), deformed, options.restPath, deformedPath);
     deformer.setFrame(deformed.positions, options.method);
     result.positions = deformer.positions();

@@ -117,7 +117,8 @@ class GmshReader {
   GmshReader(std::string_view text, std::string_view sourceName)
       : scanner_(text, sourceName), source_(sourceName) {}
 
-  VolumeMesh read() {
+  VolumeMesh read(CellShapeCheck shapes) {
+    shapes_ = shapes;
     readMeshFormat();
     for (std::string_view section = scanner_.token(); !section.empty();
          section = scanner_.token()) {
@@ -406,12 +407,13 @@ class GmshReader {
       }
       elementOfCell.resize(mesh.numCells(), elementTags_[e]);
     }
-    throwOnVolumeMeshProblem(mesh, elementOfCell, "element", source_);
+    throwOnVolumeMeshProblem(mesh, elementOfCell, "element", source_, shapes_);
     return mesh;
   }
 
   TextScanner scanner_;
   std::string source_;
+  CellShapeCheck shapes_ = CellShapeCheck::Required;
   bool version41_ = false;
   bool haveNodes_ = false, haveElements_ = false;
   std::vector<uint64_t> nodeTags_;     ///< #nodes, in file order
@@ -423,13 +425,14 @@ class GmshReader {
 
 }  // namespace
 
-VolumeMesh parseGmshMesh(std::string_view text, std::string_view sourceName) {
-  return GmshReader(text, sourceName).read();
+VolumeMesh parseGmshMesh(std::string_view text, std::string_view sourceName,
+                         CellShapeCheck shapes) {
+  return GmshReader(text, sourceName).read(shapes);
 }
 
-VolumeMesh readGmshMesh(const std::filesystem::path& path) {
+VolumeMesh readGmshMesh(const std::filesystem::path& path, CellShapeCheck shapes) {
   const std::string text = readFile(path);
-  return parseGmshMesh(text, path.string());
+  return parseGmshMesh(text, path.string(), shapes);
 }
 
 }  // namespace sculpt

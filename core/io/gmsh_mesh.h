@@ -16,9 +16,11 @@ namespace sculpt {
 
 /// Parses the text of a .msh file and validates the mesh (findVolumeMeshProblem).
 /// `sourceName` starts every error message. Throws FileError.
-VolumeMesh parseGmshMesh(std::string_view text, std::string_view sourceName);
+VolumeMesh parseGmshMesh(std::string_view text, std::string_view sourceName,
+                         CellShapeCheck shapes = CellShapeCheck::Required);
 
 /// Reads and parses a .msh file. Throws FileError.
-VolumeMesh readGmshMesh(const std::filesystem::path& path);
+VolumeMesh readGmshMesh(const std::filesystem::path& path,
+                        CellShapeCheck shapes = CellShapeCheck::Required);
 
 }  // namespace sculpt

@@ -69,7 +69,8 @@ TetGenNodes readNodes(std::string_view text, std::string_view sourceName) {
 
 // "<#tetrahedra> [nodes per tetrahedron 4|10] [#attributes]", then per tetrahedron
 // "<number> <node> <node> <node> <node> [6 more nodes] [attributes]".
-VolumeMesh readElements(std::string_view text, std::string_view sourceName, TetGenNodes nodes) {
+VolumeMesh readElements(std::string_view text, std::string_view sourceName, TetGenNodes nodes,
+                        CellShapeCheck shapes) {
   TextScanner scanner(text, sourceName, '#');
   const uint64_t numTetrahedra = scanner.count("the number of tetrahedra");
   const uint64_t nodesPerTetrahedron =
@@ -117,25 +118,26 @@ VolumeMesh readElements(std::string_view text, std::string_view sourceName, TetG
     mesh.addTetrahedron(corners);
     numberOfCell.push_back(static_cast<uint64_t>(number));
   }
-  throwOnVolumeMeshProblem(mesh, numberOfCell, "tetrahedron", sourceName);
+  throwOnVolumeMeshProblem(mesh, numberOfCell, "tetrahedron", sourceName, shapes);
   return mesh;
 }
 
 }  // namespace
 
 VolumeMesh parseTetGenMesh(std::string_view nodeText, std::string_view eleText,
-                           std::string_view nodeSourceName, std::string_view eleSourceName) {
-  return readElements(eleText, eleSourceName, readNodes(nodeText, nodeSourceName));
+                           std::string_view nodeSourceName, std::string_view eleSourceName,
+                           CellShapeCheck shapes) {
+  return readElements(eleText, eleSourceName, readNodes(nodeText, nodeSourceName), shapes);
 }
 
-VolumeMesh readTetGenMesh(const std::filesystem::path& path) {
+VolumeMesh readTetGenMesh(const std::filesystem::path& path, CellShapeCheck shapes) {
   std::filesystem::path nodePath = path;
   std::filesystem::path elePath = path;
   nodePath.replace_extension(".node");
   elePath.replace_extension(".ele");
   const std::string nodeText = readFile(nodePath);
   const std::string eleText = readFile(elePath);
-  return parseTetGenMesh(nodeText, eleText, nodePath.string(), elePath.string());
+  return parseTetGenMesh(nodeText, eleText, nodePath.string(), elePath.string(), shapes);
 }
 
 }  // namespace sculpt

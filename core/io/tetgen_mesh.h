@@ -20,10 +20,12 @@ namespace sculpt {
 /// Parses the texts of a .node and a .ele file and validates the mesh (findVolumeMeshProblem).
 /// The source names start the error messages about each file. Throws FileError.
 VolumeMesh parseTetGenMesh(std::string_view nodeText, std::string_view eleText,
-                           std::string_view nodeSourceName, std::string_view eleSourceName);
+                           std::string_view nodeSourceName, std::string_view eleSourceName,
+                           CellShapeCheck shapes = CellShapeCheck::Required);
 
 /// Reads `path` (a .node or a .ele file) and the other file of the pair (same stem). Throws
 /// FileError.
-VolumeMesh readTetGenMesh(const std::filesystem::path& path);
+VolumeMesh readTetGenMesh(const std::filesystem::path& path,
+                          CellShapeCheck shapes = CellShapeCheck::Required);
 
 }  // namespace sculpt

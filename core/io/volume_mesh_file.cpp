@@ -37,19 +37,20 @@ std::string withFileElement(const std::string& problem, std::span<const uint64_t
 }  // namespace
 
 void throwOnVolumeMeshProblem(const VolumeMesh& mesh, std::span<const uint64_t> fileElementOfCell,
-                              std::string_view elementNoun, std::string_view sourceName) {
-  const std::string problem = findVolumeMeshProblem(mesh);
+                              std::string_view elementNoun, std::string_view sourceName,
+                              CellShapeCheck shapes) {
+  const std::string problem = findVolumeMeshProblem(mesh, shapes);
   if (problem.empty()) return;
   throw FileError(std::string(sourceName) + ": " +
                   withFileElement(problem, fileElementOfCell, elementNoun));
 }
 
-VolumeMesh readVolumeMesh(const std::filesystem::path& path) {
+VolumeMesh readVolumeMesh(const std::filesystem::path& path, CellShapeCheck shapes) {
   const std::string extension = path.extension().string();
-  if (equalsIgnoringCase(extension, ".vtk")) return readVtkVolumeMesh(path);
-  if (equalsIgnoringCase(extension, ".msh")) return readGmshMesh(path);
+  if (equalsIgnoringCase(extension, ".vtk")) return readVtkVolumeMesh(path, shapes);
+  if (equalsIgnoringCase(extension, ".msh")) return readGmshMesh(path, shapes);
   if (equalsIgnoringCase(extension, ".node") || equalsIgnoringCase(extension, ".ele")) {
-    return readTetGenMesh(path);
+    return readTetGenMesh(path, shapes);
   }
   throw FileError(path.string() + ": unknown volume mesh extension '" + extension +
                   "' (expected .vtk, .msh, .node or .ele)");

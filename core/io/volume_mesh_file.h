@@ -14,7 +14,9 @@ namespace sculpt {
 /// Reads a volume mesh, choosing the reader by extension (case-insensitive): .vtk (legacy VTK),
 /// .msh (Gmsh), .node or .ele (the TetGen pair with the same stem). The mesh is validated with
 /// findVolumeMeshProblem. Throws FileError, whose message starts with the file path.
-VolumeMesh readVolumeMesh(const std::filesystem::path& path);
+/// `shapes` = Skipped reads a deformed frame, whose cells may be inverted.
+VolumeMesh readVolumeMesh(const std::filesystem::path& path,
+                          CellShapeCheck shapes = CellShapeCheck::Required);
 
 /// For the readers: throws FileError "<sourceName>: <problem>" when findVolumeMeshProblem finds
 /// one. A problem with a mesh cell also names the element of the file it came from, since
@@ -23,6 +25,7 @@ VolumeMesh readVolumeMesh(const std::filesystem::path& path);
 /// @param[in] fileElementOfCell  #cells: the file's number of the element each cell came from
 /// @param[in] elementNoun        what the file calls its elements ("element", "VTK cell", ...)
 void throwOnVolumeMeshProblem(const VolumeMesh& mesh, std::span<const uint64_t> fileElementOfCell,
-                              std::string_view elementNoun, std::string_view sourceName);
+                              std::string_view elementNoun, std::string_view sourceName,
+                              CellShapeCheck shapes = CellShapeCheck::Required);
 
 }  // namespace sculpt

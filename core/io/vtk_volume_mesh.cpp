@@ -140,7 +140,8 @@ class VtkReader {
   VtkReader(std::string_view bytes, std::string_view sourceName)
       : scanner_(bytes, sourceName), source_(sourceName) {}
 
-  VolumeMesh read() {
+  VolumeMesh read(CellShapeCheck shapes) {
+    shapes_ = shapes;
     readHeader();
     // The dataset sections, in any order, until the three that make the mesh are read; what
     // follows them (POINT_DATA, CELL_DATA, FIELD) is not needed.
@@ -502,12 +503,13 @@ class VtkReader {
       }
       fileCellOfCell.resize(mesh.numCells(), cell);
     }
-    throwOnVolumeMeshProblem(mesh, fileCellOfCell, "VTK cell", source_);
+    throwOnVolumeMeshProblem(mesh, fileCellOfCell, "VTK cell", source_, shapes_);
     return mesh;
   }
 
   TextScanner scanner_;
   std::string source_;
+  CellShapeCheck shapes_ = CellShapeCheck::Required;
   bool binary_ = false;
   bool havePoints_ = false, haveCells_ = false, haveCellTypes_ = false;
   Points points_;
@@ -518,13 +520,14 @@ class VtkReader {
 
 }  // namespace
 
-VolumeMesh parseVtkVolumeMesh(std::string_view bytes, std::string_view sourceName) {
-  return VtkReader(bytes, sourceName).read();
+VolumeMesh parseVtkVolumeMesh(std::string_view bytes, std::string_view sourceName,
+                              CellShapeCheck shapes) {
+  return VtkReader(bytes, sourceName).read(shapes);
 }
 
-VolumeMesh readVtkVolumeMesh(const std::filesystem::path& path) {
+VolumeMesh readVtkVolumeMesh(const std::filesystem::path& path, CellShapeCheck shapes) {
   const std::string bytes = readFile(path);
-  return parseVtkVolumeMesh(bytes, path.string());
+  return parseVtkVolumeMesh(bytes, path.string(), shapes);
 }
 
 std::string volumeMeshToVtk(const VolumeMesh& mesh, bool binary) {

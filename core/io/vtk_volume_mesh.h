@@ -16,10 +16,12 @@ namespace sculpt {
 
 /// Parses a whole .vtk file (`bytes` as read from disk) and validates the mesh
 /// (findVolumeMeshProblem). `sourceName` starts every error message. Throws FileError.
-VolumeMesh parseVtkVolumeMesh(std::string_view bytes, std::string_view sourceName);
+VolumeMesh parseVtkVolumeMesh(std::string_view bytes, std::string_view sourceName,
+                              CellShapeCheck shapes = CellShapeCheck::Required);
 
 /// Reads and parses a .vtk file. Throws FileError.
-VolumeMesh readVtkVolumeMesh(const std::filesystem::path& path);
+VolumeMesh readVtkVolumeMesh(const std::filesystem::path& path,
+                             CellShapeCheck shapes = CellShapeCheck::Required);
 
 /// The mesh as a legacy VTK 4.2 file (classic CELLS layout, POINTS as double, cell types 10 and
 /// 12). ASCII numbers have 17 significant digits, so both encodings read back bit for bit.

@@ -46,6 +46,11 @@ void splitPyramid(VolumeMesh& mesh, const std::array<uint32_t, 5>& nodes);
 /// to 0,2,1,3,5,4). Each quadrilateral side is cut along the diagonal through its smallest id.
 void splitWedge(VolumeMesh& mesh, const std::array<uint32_t, 6>& nodes);
 
+/// Whether findVolumeMeshProblem checks cell shapes (inverted tetrahedra, folded hexahedra).
+/// Rest meshes need them; a deformed simulation frame may legitimately contain inverted cells
+/// and is checked for structure only (finite coordinates, ids in range, no repeated node).
+enum class CellShapeCheck { Required, Skipped };
+
 /// Signed volume of tetrahedron `cell` (det/6); positive for a correctly oriented cell.
 double tetrahedronSignedVolume(const VolumeMesh& mesh, uint32_t cell);
 
@@ -54,6 +59,7 @@ double tetrahedronSignedVolume(const VolumeMesh& mesh, uint32_t cell);
 /// non-positive volume (inverted or degenerate), a hexahedron whose trilinear Jacobian is not
 /// positive at some corner. The message names the cell ("cell 12 (tetrahedron): inverted, signed
 /// volume -1.3e-05").
-std::string findVolumeMeshProblem(const VolumeMesh& mesh);
+std::string findVolumeMeshProblem(const VolumeMesh& mesh,
+                                  CellShapeCheck shapes = CellShapeCheck::Required);
 
 }  // namespace sculpt

@@ -530,3 +530,36 @@ TEST_F(DeformCliTest, PointsOutsideTheMeshAreExtrapolatedWithAWarning) {
 
 }  // namespace
 }  // namespace sculpt
+
+namespace sculpt {
+namespace {
+
+// A simulation frame may contain inverted cells (a rest mesh may not): the frame is deformed
+// anyway, with finite output, while the same mesh as REST is refused.
+TEST_F(DeformCliTest, DeformedFramesMayContainInvertedCells) {
+  const VolumeMesh rest = unitLattice();
+  const SurfaceMesh surface = sphereSurface({0.5, 0.5, 0.5}, 0.3);
+  writeScene(rest, surface, affine);
+  VolumeMesh folded = mapped(rest, affine);
+  // Push one interior node through its neighbours: several of its tetrahedra invert.
+  const uint32_t node = 2 + 5 * (2 + 5 * 2);
+  folded.positions.row(node) += Eigen::RowVector3d(0.6, 0.0, 0.0);
+  bool inverted = false;
+  for (uint32_t c = 0; c < folded.numCells(); ++c)
+    inverted = inverted || tetrahedronSignedVolume(folded, c) < 0.0;
+  ASSERT_TRUE(inverted);
+  writeVtkVolumeMesh(path("folded.vtk"), folded, false);
+  const CliResult result =
+      run(sceneArgs("folded.vtk") + " --out " + quote(path("folded.obj")));
+  EXPECT_EQ(result.exitCode, 0) << result.err;
+  const SurfaceMesh out = readSurfaceFile(path("folded.obj")).surface();
+  EXPECT_EQ(out.numVertices(), surface.numVertices());
+  EXPECT_TRUE(out.positions.allFinite());
+  expectBadInput("deform --rest " + quote(path("folded.vtk")) + " --deformed " +
+                     quote(path("folded.vtk")) + " --surface " + quote(path("surface.obj")) +
+                     " --out " + quote(path("x.obj")),
+                 "inverted");
+}
+
+}  // namespace
+}  // namespace sculpt
