@@ -6,7 +6,9 @@
 #include <gtest/gtest.h>
 
 #include <Eigen/Geometry>
+#include <cstdio>
 #include <random>
+#include <string>
 
 #include "embed/cell_coordinates.h"
 #include "embed/cell_interpolant.h"
@@ -29,6 +31,11 @@ Points mapNodes(const Points& rest, const std::function<Eigen::Vector3d(const Ei
   Points out(rest.rows(), 3);
   for (Eigen::Index i = 0; i < rest.rows(); ++i) out.row(i) = f(rest.row(i).transpose()).transpose();
   return out;
+}
+
+void measured(const char* what, const char* mesh, InterpolationMethod method, double value) {
+  std::printf("[ measured ] %s, %s, %s: %.2e\n", what, mesh, std::string(methodName(method)).c_str(),
+              value);
 }
 
 struct MeshCase {
@@ -81,6 +88,7 @@ TEST(PhongProperties, InterpolatesNodePositions) {
     for (InterpolationMethod method : kCellMethods) {
       deformer.setFrame(deformed, method);
       const Points result = deformer.positions();
+      measured("interpolation at nodes", test.name, method, (result - deformed).cwiseAbs().maxCoeff());
       EXPECT_LT((result - deformed).cwiseAbs().maxCoeff(), 1e-12)
           << test.name << ' ' << methodName(method);
     }
@@ -102,6 +110,7 @@ TEST(PhongProperties, AffineInvariance) {
       const Points before = deformer.positions();
       deformer.setFrame(transformed, method);
       const Points after = deformer.positions();
+      measured("affine invariance", test.name, method, maxAffineError(A, t, before, after));
       EXPECT_LT(maxAffineError(A, t, before, after), 1e-12)
           << test.name << ' ' << methodName(method);
     }
@@ -124,6 +133,7 @@ TEST(PhongProperties, ConstantGradientsReduceToLinearExactly) {
     for (InterpolationMethod method : kCellMethods) {
       deformer.setFrame(deformed, method);
       const Points result = deformer.positions();
+      measured("affine map reproduced", test.name, method, maxAffineError(A, t, points, result));
       EXPECT_LT(maxAffineError(A, t, points, result), 1e-12)
           << test.name << ' ' << methodName(method);
     }
@@ -189,6 +199,7 @@ TEST(PhongProperties, ContinuousAcrossSharedFaces) {
       }
     }
     EXPECT_GT(faces, 20) << test.name;
+    std::printf("[ measured ] %s: %d shared faces, largest jump %.2e\n", test.name, faces, worst);
     EXPECT_LT(worst, 1e-11) << test.name;
   }
 }
@@ -224,6 +235,8 @@ TEST(PhongProperties, GradientAndNormalsMatchFiniteDifferences) {
         const Eigen::Vector3d expected = ((fd * t1).cross(fd * t2)).normalized();
         worstNormal = std::max(worstNormal, (deformNormal(G, N) - expected).norm());
       }
+      measured("gradient vs FD (relative)", test.name, method, worstGradient);
+      measured("normal vs FD triangle", test.name, method, worstNormal);
       EXPECT_LT(worstGradient, 1e-7) << test.name << ' ' << methodName(method);
       EXPECT_LT(worstNormal, 1e-7) << test.name << ' ' << methodName(method);
     }
@@ -248,6 +261,8 @@ TEST(PhongProperties, FastPathsMatchTheReference) {
         worst = std::max(worst, (fast.row(p).transpose() - reference).norm());
         worstSingle = std::max(worstSingle, (single.row(p).transpose() - reference).norm());
       }
+      measured("fast double path vs reference", test.name, method, worst);
+      measured("single precision vs reference", test.name, method, worstSingle);
       EXPECT_LT(worst, 1e-13) << test.name << ' ' << methodName(method);
       EXPECT_LT(worstSingle, 2e-6) << test.name << ' ' << methodName(method);
     }
