@@ -271,7 +271,9 @@ int deformCommand(const CliArgs& args, std::string& file) {
   if (options.method == InterpolationMethod::Attribute)
     checkAttributeCost(rest, surface.numVertices(), options.settings.attributeRadius);
   file = options.surfacePath;
-  EmbeddedDeformer deformer(std::move(rest), surface.positions, options.settings);
+  // Progress lines for large surfaces (embedding a million points takes about a second).
+  ProgressReporter progress = surface.positions.rows() > 200'000 ? stderrProgress() : ProgressReporter{};
+  EmbeddedDeformer deformer(std::move(rest), surface.positions, options.settings, &progress);
   const Embedding& embedding = deformer.embedding();
   if (embedding.outsideCount > 0) {
     char line[256];
