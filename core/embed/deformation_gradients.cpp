@@ -76,34 +76,44 @@ void computeNodeGradients(const CompressedRows<CellWeight>& weights,
 NodeGradientStencil nodeGradientStencil(const VolumeMesh& rest, const CellGradientOperator& op,
                                         const CompressedRows<CellWeight>& weights) {
   NodeGradientStencil stencil;
-  std::vector<NodeGradientStencil::Term> terms;
+  std::vector<std::pair<uint32_t, Eigen::Vector3d>> terms;
   for (uint32_t node = 0; node < weights.numRows(); ++node) {
     terms.clear();
     for (const CellWeight& w : weights.row(node))
       for (uint32_t k = rest.cells.offsets[w.cell]; k < rest.cells.offsets[w.cell + 1]; ++k)
-        terms.push_back({rest.cells.values[k], w.weight * op.shapeGradients[k]});
+        terms.emplace_back(rest.cells.values[k], w.weight * op.shapeGradients[k]);
     std::sort(terms.begin(), terms.end(),
-              [](const auto& a, const auto& b) { return a.node < b.node; });
-    for (size_t t = 0; t < terms.size(); ++t) {
-      if (!stencil.rows.values.empty() && t > 0 && stencil.rows.values.back().node == terms[t].node)
-        stencil.rows.values.back().g += terms[t].g;
-      else
-        stencil.rows.values.push_back(terms[t]);
+              [](const auto& a, const auto& b) { return a.first < b.first; });
+    const size_t first = stencil.nodes.size();
+    for (const auto& [neighbour, g] : terms) {
+      if (stencil.nodes.size() > first && stencil.nodes.back() == neighbour) {
+        for (int d = 0; d < 3; ++d) stencil.g[stencil.g.size() - 3 + d] += g[d];
+        continue;
+      }
+      stencil.nodes.push_back(neighbour);
+      stencil.g.insert(stencil.g.end(), {g[0], g[1], g[2]});
     }
-    stencil.rows.closeRow();
+    stencil.offsets.push_back(static_cast<uint32_t>(stencil.nodes.size()));
   }
   return stencil;
 }
 
 void applyNodeGradientStencil(const NodeGradientStencil& stencil, const Points& deformedNodes,
                               std::vector<Eigen::Matrix3d>& nodeGradients) {
-  nodeGradients.resize(stencil.rows.numRows());
-  parallelChunks(stencil.rows.numRows(), 2048, [&](uint32_t begin, uint32_t end, unsigned) {
+  nodeGradients.resize(stencil.numNodes());
+  const double* x = deformedNodes.data();  // row-major: node j at x + 3 j
+  parallelChunks(stencil.numNodes(), 2048, [&](uint32_t begin, uint32_t end, unsigned) {
     for (uint32_t node = begin; node < end; ++node) {
-      Eigen::Matrix3d F = Eigen::Matrix3d::Zero();
-      for (const auto& term : stencil.rows.row(node))
-        F.noalias() += deformedNodes.row(term.node).transpose() * term.g.transpose();
-      nodeGradients[node] = F;
+      double F[3][3] = {};
+      for (uint32_t t = stencil.offsets[node]; t < stencil.offsets[node + 1]; ++t) {
+        const double* xj = x + 3 * static_cast<size_t>(stencil.nodes[t]);
+        const double* g = stencil.g.data() + 3 * static_cast<size_t>(t);
+        for (int r = 0; r < 3; ++r)
+          for (int c = 0; c < 3; ++c) F[r][c] += xj[r] * g[c];
+      }
+      Eigen::Matrix3d& out = nodeGradients[node];
+      for (int r = 0; r < 3; ++r)
+        for (int c = 0; c < 3; ++c) out(r, c) = F[r][c];
     }
   });
 }

@@ -35,11 +35,11 @@ void computeNodeGradients(const CompressedRows<CellWeight>& weights,
 /// each neighbour node once instead of each adjacent cell's gradient (a tet lattice node has 24
 /// cells but 15 neighbours), and needs no per-cell storage per frame.
 struct NodeGradientStencil {
-  struct Term {
-    uint32_t node = 0;
-    Eigen::Vector3d g = Eigen::Vector3d::Zero();
-  };
-  CompressedRows<Term> rows;  ///< row i: the terms of F_i
+  std::vector<uint32_t> offsets{0};  ///< #nodes+1: node i owns terms offsets[i] .. offsets[i+1]-1
+  std::vector<uint32_t> nodes;       ///< per term: the neighbour j
+  std::vector<double> g;             ///< per term: G_ij, 3 values (structure of arrays: the
+                                     ///< per-frame loop streams these 28 bytes per term)
+  uint32_t numNodes() const { return static_cast<uint32_t>(offsets.size() - 1); }
 };
 
 NodeGradientStencil nodeGradientStencil(const VolumeMesh& rest, const CellGradientOperator& op,
