@@ -41,8 +41,10 @@ const char* const kBenchUsage =
     "  bench deform [--vertices N] [--method phong|linear|vertex|attribute] [--repeat R]\n"
     "      Built-in scene: a tet lattice of 9261 nodes and N points (default 1000000) on a\n"
     "      bumpy sphere inside it. Times a frame (gradients, per-cell coefficients, every point\n"
-    "      in single precision; median of R, default 31). Last line: deform_ms=<median per\n"
-    "      frame> embed_ms=<precompute> vertices=<N> method=<M> threads=<T>.\n";
+    "      in single precision; median of R, default 31); each frame of M is followed by a\n"
+    "      linear frame and stderr reports the median ratio M/linear of the run. Last line:\n"
+    "      deform_ms=<median per frame> embed_ms=<precompute> vertices=<N> method=<M>\n"
+    "      threads=<T>.\n";
 
 namespace {
 

@@ -83,16 +83,32 @@ int benchDeform(const CliArgs& args) {
   }
   FloatPositions out;
   out.resize(deformer.numPoints());
-  std::vector<double> samples, nodeStage, pointStage;
+  // Each timed frame of the method is followed by a linear frame on the same data, so that the
+  // ratio to linear interpolation comes from one run (these machines are shared and noisy).
+  const bool compare = *method != InterpolationMethod::Linear;
+  std::vector<double> samples, nodeStage, pointStage, linearSamples, ratios;
   for (int r = -2; r < repeat; ++r) {  // two untimed warm-up frames
+    const Points& frame = frames[(r + 2) % 2];
     const Clock::time_point start = Clock::now();
-    deformer.setFrame(frames[(r + 2) % 2], *method);
+    deformer.setFrame(frame, *method);
     const Clock::time_point middle = Clock::now();
     deformer.evaluateSorted(out.x.data(), out.y.data(), out.z.data());
+    const double total = millisecondsSince(start);
+    double linear = 0.0;
+    if (compare) {
+      const Clock::time_point linearStart = Clock::now();
+      deformer.setFrame(frame, InterpolationMethod::Linear);
+      deformer.evaluateSorted(out.x.data(), out.y.data(), out.z.data());
+      linear = millisecondsSince(linearStart);
+    }
     if (r < 0) continue;
-    samples.push_back(millisecondsSince(start));
+    samples.push_back(total);
     nodeStage.push_back(std::chrono::duration<double, std::milli>(middle - start).count());
-    pointStage.push_back(millisecondsSince(middle));
+    pointStage.push_back(total - nodeStage.back());
+    if (compare) {
+      linearSamples.push_back(linear);
+      ratios.push_back(total / linear);
+    }
   }
   const auto median = [](std::vector<double>& v) {
     std::sort(v.begin(), v.end());
@@ -101,6 +117,9 @@ int benchDeform(const CliArgs& args) {
   const double medianMs = median(samples);
   std::cerr << "bench deform: per frame, gradients and cell coefficients " << median(nodeStage)
             << " ms, points " << median(pointStage) << " ms (medians)\n";
+  if (compare)
+    std::cerr << "bench deform: linear frames interleaved in the same run " << median(linearSamples)
+              << " ms; median ratio " << methodName << "/linear " << median(ratios) << '\n';
   char line[256];
   std::snprintf(line, sizeof line,
                 "deform_ms=%.3f embed_ms=%.1f vertices=%d method=%s threads=%u", medianMs, embedMs,
