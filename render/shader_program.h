@@ -1,0 +1,26 @@
+#pragma once
+// A linked GLSL program from vertex and fragment source, with the compiler's log in the error.
+
+#include <string>
+#include <string_view>
+
+#include "render/gl.h"
+
+namespace sculpt::render {
+
+class ShaderProgram {
+ public:
+  /// Compiles and links; throws std::runtime_error with the GLSL log ("<name>: ...").
+  ShaderProgram(std::string_view name, const char* vertexSource, const char* fragmentSource);
+  ~ShaderProgram();
+  ShaderProgram(const ShaderProgram&) = delete;
+  ShaderProgram& operator=(const ShaderProgram&) = delete;
+
+  void use() const { glUseProgram(program_); }
+  GLint uniform(const char* name) const { return glGetUniformLocation(program_, name); }
+
+ private:
+  GLuint program_ = 0;
+};
+
+}  // namespace sculpt::render
