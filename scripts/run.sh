@@ -3,7 +3,9 @@
 #
 #   scripts/run.sh [CONTROL.json]      (default: assets/block3.json)
 #
-# The window (`sculpt`) does not exist yet. Until it does, this builds `sculpt-cli`, prints
+# It builds `sculpt` (the window) and `sculpt-cli`, runs the command-line demo on the control mesh
+# and then opens the window on the default model (the Stanford bunny). Without a display the
+# window renders headless under xvfb-run into out/sculpt_default.png. The demo prints
 # `sculpt-cli info` of the model at level 2, writes its level-2 subdivision to out/ and
 # simulates one second of it sagging under gravity:
 #   out/<name>_level2.vtk            the level-2 cell complex (open it in ParaView)
@@ -17,7 +19,7 @@ ROOT="$(cd "$(dirname "${BASH_SOURCE[0]}")/.." && pwd)"
 cd "$ROOT"
 
 if [[ $# -gt 1 || "${1:-}" == "-h" || "${1:-}" == "--help" ]]; then
-  sed -n '2,9p' "${BASH_SOURCE[0]}" | sed 's/^# \{0,1\}//'
+  sed -n '2,13p' "${BASH_SOURCE[0]}" | sed 's/^# \{0,1\}//'
   [[ $# -gt 1 ]] && exit 2
   exit 0
 fi
@@ -47,8 +49,8 @@ cmake -S "$ROOT" -B "$ROOT/$BUILD_DIR" -G Ninja \
   -DSCULPT_SANITIZE="" \
   -DCMAKE_CXX_COMPILER_LAUNCHER=ccache
 
-stage "3/4 build sculpt-cli with $JOBS jobs"
-cmake --build "$ROOT/$BUILD_DIR" --parallel "$JOBS" --target sculpt-cli
+stage "3/4 build sculpt and sculpt-cli with $JOBS jobs"
+cmake --build "$ROOT/$BUILD_DIR" --parallel "$JOBS" --target sculpt-cli sculpt
 
 stage "4/4 run on $ASSET (level $LEVELS)"
 mkdir -p "$ROOT/out"
@@ -82,4 +84,19 @@ echo "  $ROOT/$VTK   (level-$LEVELS cell complex, legacy VTK: open it in ParaVie
 echo "  $ROOT/$OBJ   (its boundary surface, OBJ)"
 echo "  $ROOT/$SIM   (the control mesh after 1 s under gravity, with its displacement field)"
 [[ -n "$SURFACE" ]] && echo "  $ROOT/$SURFACE   (the boundary surface deformed with the control mesh, OBJ)"
+
+SCULPT="$ROOT/$BUILD_DIR/bin/sculpt"
+SHOT="out/sculpt_default.png"
+if [[ -n "${DISPLAY:-}" ]]; then
+  echo
+  echo "\$ $BUILD_DIR/bin/sculpt   (the window; close it to finish)"
+  "$SCULPT"
+elif command -v xvfb-run >/dev/null 2>&1; then
+  echo
+  echo "no display: rendering the window headless under xvfb-run"
+  xvfb-run -a -s "-screen 0 1280x1024x24" "$SCULPT" --headless --frames 3 --screenshot "$SHOT"
+  echo "  $ROOT/$SHOT   (screenshot of the window's default scene)"
+else
+  echo "no display and no xvfb-run: the window was not started" >&2
+fi
 true
