@@ -1,10 +1,22 @@
 #include "render/shader_program.h"
 
+#include <algorithm>
 #include <stdexcept>
+#include <string>
 #include <vector>
 
 namespace sculpt::render {
 namespace {
+
+/// The info log of a shader or program (glGetShaderiv/glGetShaderInfoLog or the program pair).
+template <typename GetIv, typename GetLog>
+std::string infoLog(GLuint object, GetIv getIv, GetLog getLog) {
+  GLint length = 0;
+  getIv(object, GL_INFO_LOG_LENGTH, &length);
+  std::vector<char> log(static_cast<size_t>(std::max(length, 1)), '\0');
+  getLog(object, length, nullptr, log.data());
+  return log.data();
+}
 
 GLuint compile(std::string_view name, GLenum kind, const char* source) {
   const GLuint shader = glCreateShader(kind);
@@ -13,14 +25,11 @@ GLuint compile(std::string_view name, GLenum kind, const char* source) {
   GLint ok = GL_FALSE;
   glGetShaderiv(shader, GL_COMPILE_STATUS, &ok);
   if (ok != GL_TRUE) {
-    GLint length = 0;
-    glGetShaderiv(shader, GL_INFO_LOG_LENGTH, &length);
-    std::vector<char> log(static_cast<size_t>(std::max(length, 1)));
-    glGetShaderInfoLog(shader, length, nullptr, log.data());
+    const std::string log = infoLog(shader, glGetShaderiv, glGetShaderInfoLog);
     glDeleteShader(shader);
     throw std::runtime_error(std::string(name) +
                              (kind == GL_VERTEX_SHADER ? " vertex" : " fragment") +
-                             " shader: " + log.data());
+                             " shader: " + log);
   }
   return shader;
 }
@@ -40,12 +49,9 @@ ShaderProgram::ShaderProgram(std::string_view name, const char* vertexSource,
   GLint ok = GL_FALSE;
   glGetProgramiv(program_, GL_LINK_STATUS, &ok);
   if (ok != GL_TRUE) {
-    GLint length = 0;
-    glGetProgramiv(program_, GL_INFO_LOG_LENGTH, &length);
-    std::vector<char> log(static_cast<size_t>(std::max(length, 1)));
-    glGetProgramInfoLog(program_, length, nullptr, log.data());
+    const std::string log = infoLog(program_, glGetProgramiv, glGetProgramInfoLog);
     glDeleteProgram(program_);
-    throw std::runtime_error(std::string(name) + " link: " + log.data());
+    throw std::runtime_error(std::string(name) + " link: " + log);
   }
 }
 

@@ -18,6 +18,7 @@
 #include "io/obj_surface.h"
 #include "mesh/validation.h"
 #include "subdiv/mj_refiner.h"
+#include "support/tetgen.h"
 
 namespace sculpt {
 namespace {
@@ -38,36 +39,10 @@ SurfaceMesh triangleSurface(const std::vector<Eigen::Vector3d>& points,
 // An icosahedron subdivided `levels` times and pushed onto the sphere (outward triangles).
 SurfaceMesh icosphere(int levels, double radius, const Eigen::Vector3d& centre,
                       size_t dropFaces = 0) {
-  const double t = (1.0 + std::sqrt(5.0)) / 2.0;
-  std::vector<Eigen::Vector3d> points = {{-1, t, 0}, {1, t, 0}, {-1, -t, 0}, {1, -t, 0},
-                                         {0, -1, t}, {0, 1, t}, {0, -1, -t}, {0, 1, -t},
-                                         {t, 0, -1}, {t, 0, 1}, {-t, 0, -1}, {-t, 0, 1}};
-  std::vector<std::array<uint32_t, 3>> faces = {
-      {0, 11, 5},  {0, 5, 1},  {0, 1, 7},  {0, 7, 10}, {0, 10, 11}, {1, 5, 9}, {5, 11, 4},
-      {11, 10, 2}, {10, 7, 6}, {7, 1, 8},  {3, 9, 4},  {3, 4, 2},   {3, 2, 6}, {3, 6, 8},
-      {3, 8, 9},   {4, 9, 5},  {2, 4, 11}, {6, 2, 10}, {8, 6, 7},   {9, 8, 1}};
-  for (int level = 0; level < levels; ++level) {
-    std::map<std::pair<uint32_t, uint32_t>, uint32_t> midpoints;
-    const auto midpoint = [&](uint32_t a, uint32_t b) {
-      const auto key = std::minmax(a, b);
-      auto [it, added] = midpoints.try_emplace(key, uint32_t(points.size()));
-      if (added) points.push_back(0.5 * (points[a] + points[b]));
-      return it->second;
-    };
-    std::vector<std::array<uint32_t, 3>> finer;
-    for (const auto& f : faces) {
-      const uint32_t ab = midpoint(f[0], f[1]), bc = midpoint(f[1], f[2]),
-                     ca = midpoint(f[2], f[0]);
-      finer.push_back({f[0], ab, ca});
-      finer.push_back({f[1], bc, ab});
-      finer.push_back({f[2], ca, bc});
-      finer.push_back({ab, bc, ca});
-    }
-    faces = finer;
-  }
-  for (auto& p : points) p = centre + radius * p.normalized();
-  faces.resize(faces.size() - dropFaces);
-  return triangleSurface(points, faces);
+  // The icosphere of the TetGen test support, as a SurfaceMesh (optionally with holes).
+  test::TriangleSurface sphere = test::icosphereSurface(centre, radius, levels);
+  sphere.triangles.resize(sphere.triangles.size() - dropFaces);
+  return triangleSurface(sphere.vertices, sphere.triangles);
 }
 
 SurfaceMesh bunny() { return readObjSurface(SCULPT_SOURCE_DIR "/assets/bunny.obj"); }
