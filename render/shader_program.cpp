@@ -37,15 +37,19 @@ GLuint compile(std::string_view name, GLenum kind, const char* source) {
 }  // namespace
 
 ShaderProgram::ShaderProgram(std::string_view name, const char* vertexSource,
-                             const char* fragmentSource) {
+                             const char* fragmentSource,
+                             std::span<const char* const> feedbackVaryings) {
   const GLuint vertex = compile(name, GL_VERTEX_SHADER, vertexSource);
-  const GLuint fragment = compile(name, GL_FRAGMENT_SHADER, fragmentSource);
+  const GLuint fragment = fragmentSource ? compile(name, GL_FRAGMENT_SHADER, fragmentSource) : 0;
   program_ = glCreateProgram();
   glAttachShader(program_, vertex);
-  glAttachShader(program_, fragment);
+  if (fragment) glAttachShader(program_, fragment);
+  if (!feedbackVaryings.empty())
+    glTransformFeedbackVaryings(program_, static_cast<GLsizei>(feedbackVaryings.size()),
+                                feedbackVaryings.data(), GL_INTERLEAVED_ATTRIBS);
   glLinkProgram(program_);
   glDeleteShader(vertex);
-  glDeleteShader(fragment);
+  if (fragment) glDeleteShader(fragment);
   GLint ok = GL_FALSE;
   glGetProgramiv(program_, GL_LINK_STATUS, &ok);
   if (ok != GL_TRUE) {

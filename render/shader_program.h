@@ -1,6 +1,7 @@
 #pragma once
 // A linked GLSL program from vertex and fragment source, with the compiler's log in the error.
 
+#include <span>
 #include <string>
 #include <string_view>
 
@@ -11,7 +12,10 @@ namespace sculpt::render {
 class ShaderProgram {
  public:
   /// Compiles and links; throws std::runtime_error with the GLSL log ("<name>: ...").
-  ShaderProgram(std::string_view name, const char* vertexSource, const char* fragmentSource);
+  /// `fragmentSource` may be null for a transform-feedback-only program; `feedbackVaryings` are
+  /// the vertex outputs captured (interleaved) by transform feedback.
+  ShaderProgram(std::string_view name, const char* vertexSource, const char* fragmentSource,
+                std::span<const char* const> feedbackVaryings = {});
   ~ShaderProgram();
   ShaderProgram(const ShaderProgram&) = delete;
   ShaderProgram& operator=(const ShaderProgram&) = delete;

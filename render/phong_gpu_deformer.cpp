@@ -1,0 +1,143 @@
+#include "render/phong_gpu_deformer.h"
+
+#include <array>
+#include <stdexcept>
+
+#include "shader_sources.h"
+
+namespace sculpt::render {
+namespace {
+
+constexpr std::array<const char*, 2> kFeedback = {"deformedPosition", "deformedNormal"};
+
+/// A buffer texture over a new buffer with `bytes` of `data`.
+void makeBufferTexture(GLuint& buffer, GLuint& texture, GLenum format, const void* data,
+                       size_t bytes, GLenum usage) {
+  glGenBuffers(1, &buffer);
+  glBindBuffer(GL_TEXTURE_BUFFER, buffer);
+  glBufferData(GL_TEXTURE_BUFFER, static_cast<GLsizeiptr>(bytes), data, usage);
+  glGenTextures(1, &texture);
+  glBindTexture(GL_TEXTURE_BUFFER, texture);
+  glTexBuffer(GL_TEXTURE_BUFFER, format, buffer);
+  glBindTexture(GL_TEXTURE_BUFFER, 0);
+  glBindBuffer(GL_TEXTURE_BUFFER, 0);
+}
+
+GLuint makeVertexBuffer(const void* data, size_t bytes) {
+  GLuint buffer = 0;
+  glGenBuffers(1, &buffer);
+  glBindBuffer(GL_ARRAY_BUFFER, buffer);
+  glBufferData(GL_ARRAY_BUFFER, static_cast<GLsizeiptr>(bytes), data, GL_STATIC_DRAW);
+  return buffer;
+}
+
+}  // namespace
+
+PhongGpuDeformer::PhongGpuDeformer(const VolumeMesh& rest, std::span<const uint32_t> cells,
+                                   std::span<const float> local,
+                                   std::span<const float> restNormals)
+    : program_("phong_deform", shaders::kPhongDeformVert, nullptr, kFeedback),
+      numVertices_(static_cast<uint32_t>(cells.size())) {
+  if (local.size() != 3 * cells.size() || restNormals.size() != 3 * cells.size())
+    throw std::invalid_argument("PhongGpuDeformer: per-vertex arrays differ in length");
+  // Static cell table: 8 node ids per cell, -1 padding for tetrahedra.
+  std::vector<int32_t> cellNodes(8 * static_cast<size_t>(rest.numCells()), -1);
+  for (uint32_t c = 0; c < rest.numCells(); ++c) {
+    const auto nodes = rest.cells.row(c);
+    for (size_t k = 0; k < nodes.size(); ++k) cellNodes[8 * c + k] = static_cast<int32_t>(nodes[k]);
+  }
+  makeBufferTexture(cellNodesBuffer_, cellNodesTexture_, GL_R32I, cellNodes.data(),
+                    cellNodes.size() * sizeof(int32_t), GL_STATIC_DRAW);
+  std::vector<float> restNodes(4 * static_cast<size_t>(rest.numNodes()), 0.0f);
+  for (uint32_t i = 0; i < rest.numNodes(); ++i)
+    for (int d = 0; d < 3; ++d) restNodes[4 * i + d] = static_cast<float>(rest.positions(i, d));
+  makeBufferTexture(restNodesBuffer_, restNodesTexture_, GL_RGBA32F, restNodes.data(),
+                    restNodes.size() * sizeof(float), GL_STATIC_DRAW);
+  makeBufferTexture(frameBuffer_, frameTexture_, GL_RGBA32F, nullptr,
+                    16 * sizeof(float) * rest.numNodes(), GL_STREAM_DRAW);
+
+  glGenVertexArrays(1, &vao_);
+  glBindVertexArray(vao_);
+  cellBuffer_ = makeVertexBuffer(cells.data(), cells.size_bytes());
+  glEnableVertexAttribArray(0);
+  glVertexAttribIPointer(0, 1, GL_INT, 0, nullptr);
+  localBuffer_ = makeVertexBuffer(local.data(), local.size_bytes());
+  glEnableVertexAttribArray(1);
+  glVertexAttribPointer(1, 3, GL_FLOAT, GL_FALSE, 0, nullptr);
+  normalBuffer_ = makeVertexBuffer(restNormals.data(), restNormals.size_bytes());
+  glEnableVertexAttribArray(2);
+  glVertexAttribPointer(2, 3, GL_FLOAT, GL_FALSE, 0, nullptr);
+  glBindVertexArray(0);
+
+  glGenBuffers(1, &feedbackBuffer_);
+  glBindBuffer(GL_TRANSFORM_FEEDBACK_BUFFER, feedbackBuffer_);
+  glBufferData(GL_TRANSFORM_FEEDBACK_BUFFER,
+               static_cast<GLsizeiptr>(6 * sizeof(float) * numVertices_), nullptr, GL_STREAM_READ);
+  glBindBuffer(GL_TRANSFORM_FEEDBACK_BUFFER, 0);
+}
+
+PhongGpuDeformer::~PhongGpuDeformer() {
+  const GLuint buffers[] = {cellBuffer_,      localBuffer_, normalBuffer_, cellNodesBuffer_,
+                            restNodesBuffer_, frameBuffer_, feedbackBuffer_};
+  glDeleteBuffers(7, buffers);
+  const GLuint textures[] = {cellNodesTexture_, restNodesTexture_, frameTexture_};
+  glDeleteTextures(3, textures);
+  glDeleteVertexArrays(1, &vao_);
+}
+
+void PhongGpuDeformer::setFrame(
+    const Eigen::Matrix<double, Eigen::Dynamic, 3, Eigen::RowMajor>& nodes,
+    const std::vector<Eigen::Matrix3d>& gradients, float alpha) {
+  // 4 texels per node: x_i, then the three rows of F_i (zero when gradients are not given).
+  std::vector<float> data(16 * static_cast<size_t>(nodes.rows()), 0.0f);
+  for (Eigen::Index i = 0; i < nodes.rows(); ++i) {
+    float* node = data.data() + 16 * i;
+    for (int d = 0; d < 3; ++d) node[d] = static_cast<float>(nodes(i, d));
+    if (static_cast<size_t>(i) < gradients.size())
+      for (int r = 0; r < 3; ++r)
+        for (int c = 0; c < 3; ++c) node[4 * (r + 1) + c] = static_cast<float>(gradients[i](r, c));
+  }
+  glBindBuffer(GL_TEXTURE_BUFFER, frameBuffer_);
+  glBufferData(GL_TEXTURE_BUFFER, static_cast<GLsizeiptr>(data.size() * sizeof(float)), data.data(),
+               GL_STREAM_DRAW);
+  glBindBuffer(GL_TEXTURE_BUFFER, 0);
+  alpha_ = alpha;
+}
+
+void PhongGpuDeformer::capture(std::vector<float>& positions, std::vector<float>& normals) const {
+  program_.use();
+  const GLuint textures[] = {cellNodesTexture_, restNodesTexture_, frameTexture_};
+  const char* samplers[] = {"cellNodes", "restNodes", "frameNodes"};
+  for (int unit = 0; unit < 3; ++unit) {
+    glActiveTexture(static_cast<GLenum>(GL_TEXTURE0 + unit));
+    glBindTexture(GL_TEXTURE_BUFFER, textures[unit]);
+    glUniform1i(program_.uniform(samplers[unit]), unit);
+  }
+  glUniform1f(program_.uniform("alpha"), alpha_);
+  const float identity[16] = {1, 0, 0, 0, 0, 1, 0, 0, 0, 0, 1, 0, 0, 0, 0, 1};
+  glUniformMatrix4fv(program_.uniform("modelView"), 1, GL_FALSE, identity);
+  glUniformMatrix4fv(program_.uniform("projection"), 1, GL_FALSE, identity);
+  glBindVertexArray(vao_);
+  glEnable(GL_RASTERIZER_DISCARD);
+  glBindBufferBase(GL_TRANSFORM_FEEDBACK_BUFFER, 0, feedbackBuffer_);
+  glBeginTransformFeedback(GL_POINTS);
+  glDrawArrays(GL_POINTS, 0, static_cast<GLsizei>(numVertices_));
+  glEndTransformFeedback();
+  glDisable(GL_RASTERIZER_DISCARD);
+  glBindVertexArray(0);
+  std::vector<float> interleaved(6 * static_cast<size_t>(numVertices_));
+  glBindBuffer(GL_TRANSFORM_FEEDBACK_BUFFER, feedbackBuffer_);
+  glGetBufferSubData(GL_TRANSFORM_FEEDBACK_BUFFER, 0,
+                     static_cast<GLsizeiptr>(interleaved.size() * sizeof(float)),
+                     interleaved.data());
+  glBindBuffer(GL_TRANSFORM_FEEDBACK_BUFFER, 0);
+  positions.resize(3 * static_cast<size_t>(numVertices_));
+  normals.resize(3 * static_cast<size_t>(numVertices_));
+  for (uint32_t v = 0; v < numVertices_; ++v)
+    for (int d = 0; d < 3; ++d) {
+      positions[3 * v + d] = interleaved[6 * v + d];
+      normals[3 * v + d] = interleaved[6 * v + 3 + d];
+    }
+}
+
+}  // namespace sculpt::render

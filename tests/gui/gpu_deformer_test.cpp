@@ -1,0 +1,115 @@
+// The GPU Phong deformer (vertex shader, read back by transform feedback) against the CPU
+// reference of core/embed, on jittered tet and hex lattices, for linear, vertex and phong.
+// Tolerance: 1e-5 of the bounding-box diagonal (single precision on the GPU).
+
+#include <gtest/gtest.h>
+
+#include <cstdio>
+#include <cstdlib>
+#include <random>
+
+#include "render/gl.h"
+#define GLFW_INCLUDE_NONE
+#include <GLFW/glfw3.h>
+
+#include "embed/cell_coordinates.h"
+#include "embed/cell_interpolant.h"
+#include "embed/embedded_deformer.h"
+#include "mesh/lattice_mesh.h"
+#include "render/phong_gpu_deformer.h"
+
+namespace sculpt {
+namespace {
+
+/// A hidden window with an OpenGL 3.3 core context for the test's lifetime.
+class GpuPhongDeformer : public ::testing::Test {
+ protected:
+  void SetUp() override {
+    ASSERT_NE(std::getenv("DISPLAY"), nullptr)
+        << "no X display: run the GUI tests under xvfb-run (scripts/test.sh does)";
+    ASSERT_TRUE(glfwInit());
+    glfwWindowHint(GLFW_CONTEXT_VERSION_MAJOR, 3);
+    glfwWindowHint(GLFW_CONTEXT_VERSION_MINOR, 3);
+    glfwWindowHint(GLFW_OPENGL_PROFILE, GLFW_OPENGL_CORE_PROFILE);
+    glfwWindowHint(GLFW_OPENGL_FORWARD_COMPAT, GLFW_TRUE);
+    glfwWindowHint(GLFW_VISIBLE, GLFW_FALSE);
+    window_ = glfwCreateWindow(64, 64, "gpu deformer test", nullptr, nullptr);
+    ASSERT_NE(window_, nullptr);
+    glfwMakeContextCurrent(window_);
+  }
+  void TearDown() override {
+    if (window_) glfwDestroyWindow(window_);
+    glfwTerminate();
+  }
+  GLFWwindow* window_ = nullptr;
+};
+
+Eigen::Vector3d smoothMap(const Eigen::Vector3d& X) {
+  return X + 0.15 * Eigen::Vector3d(std::sin(2 * X.y()) + X.z() * X.z(), std::cos(1.5 * X.z()) * X.x(),
+                                    X.x() * X.y() - X.z() * X.z() * X.z());
+}
+
+TEST_F(GpuPhongDeformer, GpuAndCpuDeformersAgreeOnTetsAndHexes) {
+  LatticeSpec spec;
+  spec.cubes = {5, 4, 4};
+  spec.spacing = 0.25;
+  for (bool hexahedra : {false, true}) {
+    VolumeMesh mesh = hexahedra ? hexLattice(spec) : tetLattice(spec);
+    jitterLattice(mesh, spec, 0.15, 3);
+    // Points inside the cells, with random rest normals.
+    std::mt19937 random(5);
+    std::uniform_real_distribution<double> uniform(0.05, 0.95);
+    std::normal_distribution<double> gauss;
+    const uint32_t perCell = 6;
+    Points points(static_cast<Eigen::Index>(mesh.numCells()) * perCell, 3);
+    Points normals(points.rows(), 3);
+    for (uint32_t c = 0, row = 0; c < mesh.numCells(); ++c)
+      for (uint32_t k = 0; k < perCell; ++k, ++row) {
+        Eigen::Vector3d xi(uniform(random), uniform(random), uniform(random));
+        if (mesh.isTetrahedron(c) && xi.sum() > 0.95) xi *= 0.9 / xi.sum();
+        points.row(row) = cellPoint(mesh, c, xi).transpose();
+        normals.row(row) = Eigen::RowVector3d(gauss(random), gauss(random), gauss(random)).normalized();
+      }
+    EmbeddedDeformer cpu(mesh, points);
+    std::vector<float> local, restNormals;
+    for (uint32_t p = 0; p < cpu.numPoints(); ++p)
+      for (int d = 0; d < 3; ++d) {
+        local.push_back(static_cast<float>(cpu.embedding().local(p, d)));
+        restNormals.push_back(static_cast<float>(normals(p, d)));
+      }
+    render::PhongGpuDeformer gpu(mesh, cpu.embedding().cells, local, restNormals);
+    Points nodes(mesh.positions.rows(), 3);
+    for (Eigen::Index i = 0; i < nodes.rows(); ++i)
+      nodes.row(i) = smoothMap(mesh.positions.row(i).transpose()).transpose();
+    const double diagonal =
+        (nodes.colwise().maxCoeff() - nodes.colwise().minCoeff()).norm();
+    cpu.setFrame(nodes, InterpolationMethod::Phong);  // node gradients for every alpha
+    const std::vector<Eigen::Matrix3d> gradients = cpu.nodeGradients();
+    std::vector<uint32_t> anchors(cpu.numPoints());
+    for (uint32_t p = 0; p < cpu.numPoints(); ++p) anchors[p] = p;
+    for (InterpolationMethod method :
+         {InterpolationMethod::Linear, InterpolationMethod::Vertex, InterpolationMethod::Phong}) {
+      cpu.setFrame(nodes, method);
+      const Points expected = cpu.positions();
+      const Points expectedNormals = cpu.deformNormals(normals, anchors);
+      gpu.setFrame(nodes, gradients, static_cast<float>(gradientBlend(method)));
+      std::vector<float> positions, gpuNormals;
+      gpu.capture(positions, gpuNormals);
+      double worst = 0.0, worstNormal = 0.0;
+      for (uint32_t p = 0; p < cpu.numPoints(); ++p) {
+        const Eigen::Vector3d a(positions[3 * p], positions[3 * p + 1], positions[3 * p + 2]);
+        const Eigen::Vector3d n(gpuNormals[3 * p], gpuNormals[3 * p + 1], gpuNormals[3 * p + 2]);
+        worst = std::max(worst, (a - expected.row(p).transpose()).norm());
+        worstNormal = std::max(worstNormal, (n - expectedNormals.row(p).transpose()).norm());
+      }
+      std::printf("[ measured ] %s %s: position %.2e of the diagonal, normal %.2e\n",
+                  hexahedra ? "hexes" : "tets", std::string(methodName(method)).c_str(),
+                  worst / diagonal, worstNormal);
+      EXPECT_LT(worst / diagonal, 1e-5) << methodName(method);
+      EXPECT_LT(worstNormal, 1e-4) << methodName(method);
+    }
+  }
+}
+
+}  // namespace
+}  // namespace sculpt
