@@ -37,6 +37,8 @@ PhongGpuDeformer::PhongGpuDeformer(const VolumeMesh& rest, std::span<const uint3
                                    std::span<const float> local,
                                    std::span<const float> restNormals)
     : program_("phong_deform", shaders::kPhongDeformVert, nullptr, kFeedback),
+      drawProgram_("phong_surface", shaders::kPhongDeformVert,
+                   litFragmentSource(shaders::kPhongSurfaceFrag).c_str()),
       numVertices_(static_cast<uint32_t>(cells.size())) {
   if (local.size() != 3 * cells.size() || restNormals.size() != 3 * cells.size())
     throw std::invalid_argument("PhongGpuDeformer: per-vertex arrays differ in length");
@@ -67,6 +69,8 @@ PhongGpuDeformer::PhongGpuDeformer(const VolumeMesh& rest, std::span<const uint3
   normalBuffer_ = makeVertexBuffer(restNormals.data(), restNormals.size_bytes());
   glEnableVertexAttribArray(2);
   glVertexAttribPointer(2, 3, GL_FLOAT, GL_FALSE, 0, nullptr);
+  glGenBuffers(1, &indexBuffer_);
+  glBindBuffer(GL_ELEMENT_ARRAY_BUFFER, indexBuffer_);
   glBindVertexArray(0);
 
   glGenBuffers(1, &feedbackBuffer_);
@@ -77,9 +81,9 @@ PhongGpuDeformer::PhongGpuDeformer(const VolumeMesh& rest, std::span<const uint3
 }
 
 PhongGpuDeformer::~PhongGpuDeformer() {
-  const GLuint buffers[] = {cellBuffer_,      localBuffer_, normalBuffer_, cellNodesBuffer_,
-                            restNodesBuffer_, frameBuffer_, feedbackBuffer_};
-  glDeleteBuffers(7, buffers);
+  const GLuint buffers[] = {cellBuffer_,      localBuffer_, normalBuffer_,   cellNodesBuffer_,
+                            restNodesBuffer_, frameBuffer_, feedbackBuffer_, indexBuffer_};
+  glDeleteBuffers(8, buffers);
   const GLuint textures[] = {cellNodesTexture_, restNodesTexture_, frameTexture_};
   glDeleteTextures(3, textures);
   glDeleteVertexArrays(1, &vao_);
@@ -104,16 +108,41 @@ void PhongGpuDeformer::setFrame(
   alpha_ = alpha;
 }
 
-void PhongGpuDeformer::capture(std::vector<float>& positions, std::vector<float>& normals) const {
-  program_.use();
+void PhongGpuDeformer::bindFrameTextures(const ShaderProgram& program) const {
+  program.use();
   const GLuint textures[] = {cellNodesTexture_, restNodesTexture_, frameTexture_};
   const char* samplers[] = {"cellNodes", "restNodes", "frameNodes"};
   for (int unit = 0; unit < 3; ++unit) {
     glActiveTexture(static_cast<GLenum>(GL_TEXTURE0 + unit));
     glBindTexture(GL_TEXTURE_BUFFER, textures[unit]);
-    glUniform1i(program_.uniform(samplers[unit]), unit);
+    glUniform1i(program.uniform(samplers[unit]), unit);
   }
-  glUniform1f(program_.uniform("alpha"), alpha_);
+  glActiveTexture(GL_TEXTURE0);
+  glUniform1f(program.uniform("alpha"), alpha_);
+}
+
+void PhongGpuDeformer::setTriangles(std::span<const uint32_t> indices) {
+  glBindVertexArray(vao_);
+  glBindBuffer(GL_ELEMENT_ARRAY_BUFFER, indexBuffer_);
+  glBufferData(GL_ELEMENT_ARRAY_BUFFER, static_cast<GLsizeiptr>(indices.size_bytes()),
+               indices.data(), GL_STATIC_DRAW);
+  glBindVertexArray(0);
+  indexCount_ = static_cast<GLsizei>(indices.size());
+}
+
+void PhongGpuDeformer::draw(const glm::mat4& modelView, const glm::mat4& projection,
+                            const glm::vec3& colour) const {
+  bindFrameTextures(drawProgram_);
+  glUniformMatrix4fv(drawProgram_.uniform("modelView"), 1, GL_FALSE, &modelView[0][0]);
+  glUniformMatrix4fv(drawProgram_.uniform("projection"), 1, GL_FALSE, &projection[0][0]);
+  glUniform3f(drawProgram_.uniform("baseColour"), colour.x, colour.y, colour.z);
+  glBindVertexArray(vao_);
+  glDrawElements(GL_TRIANGLES, indexCount_, GL_UNSIGNED_INT, nullptr);
+  glBindVertexArray(0);
+}
+
+void PhongGpuDeformer::capture(std::vector<float>& positions, std::vector<float>& normals) const {
+  bindFrameTextures(program_);
   const float identity[16] = {1, 0, 0, 0, 0, 1, 0, 0, 0, 0, 1, 0, 0, 0, 0, 1};
   glUniformMatrix4fv(program_.uniform("modelView"), 1, GL_FALSE, identity);
   glUniformMatrix4fv(program_.uniform("projection"), 1, GL_FALSE, identity);

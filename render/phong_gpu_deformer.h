@@ -9,6 +9,7 @@
 #include <vector>
 
 #include <Eigen/Core>
+#include <glm/glm.hpp>
 
 #include "mesh/volume_mesh.h"
 #include "render/gl.h"
@@ -34,10 +35,19 @@ class PhongGpuDeformer {
   /// Runs the vertex shader over all vertices with transform feedback: 3 position and 3 normal
   /// floats per vertex.
   void capture(std::vector<float>& positions, std::vector<float>& normals) const;
+  /// Triangle indices (3 per triangle) of the embedded surface, uploaded once.
+  void setTriangles(std::span<const uint32_t> indices);
+  /// Draws the deformed surface (the vertex shader deforms, the fragment shader lights).
+  void draw(const glm::mat4& modelView, const glm::mat4& projection, const glm::vec3& colour) const;
   uint32_t numVertices() const { return numVertices_; }
 
  private:
-  ShaderProgram program_;
+  void bindFrameTextures(const ShaderProgram& program) const;
+
+  ShaderProgram program_;      ///< transform feedback (capture)
+  ShaderProgram drawProgram_;  ///< the same vertex shader with lighting
+  GLuint indexBuffer_ = 0;
+  GLsizei indexCount_ = 0;
   GLuint vao_ = 0, cellBuffer_ = 0, localBuffer_ = 0, normalBuffer_ = 0;
   GLuint cellNodesBuffer_ = 0, cellNodesTexture_ = 0;
   GLuint restNodesBuffer_ = 0, restNodesTexture_ = 0;

@@ -1,5 +1,7 @@
 #include "render/shader_program.h"
 
+#include "shader_sources.h"
+
 #include <algorithm>
 #include <stdexcept>
 #include <string>
@@ -35,6 +37,10 @@ GLuint compile(std::string_view name, GLenum kind, const char* source) {
 }
 
 }  // namespace
+
+std::string litFragmentSource(const char* body) {
+  return std::string("#version 330 core\n") + shaders::kLightingGlsl + body;
+}
 
 ShaderProgram::ShaderProgram(std::string_view name, const char* vertexSource,
                              const char* fragmentSource,

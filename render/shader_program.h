@@ -9,6 +9,10 @@
 
 namespace sculpt::render {
 
+/// A fragment shader body with the version line and the shared lighting functions in front
+/// (GLSL 3.30 has no #include).
+std::string litFragmentSource(const char* body);
+
 class ShaderProgram {
  public:
   /// Compiles and links; throws std::runtime_error with the GLSL log ("<name>: ...").

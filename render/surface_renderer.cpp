@@ -7,7 +7,7 @@
 namespace sculpt::render {
 
 SurfaceRenderer::SurfaceRenderer()
-    : program_("surface", shaders::kSurfaceVert, shaders::kSurfaceFrag) {
+    : program_("surface", shaders::kSurfaceVert, litFragmentSource(shaders::kSurfaceFrag).c_str()) {
   glGenVertexArrays(1, &vao_);
   glGenBuffers(1, &positionBuffer_);
   glGenBuffers(1, &normalBuffer_);

@@ -3,8 +3,9 @@
 //
 //   sculpt [--surface FILE] [--headless] [--frames N] [--screenshot OUT.png] [--size WxH]
 //
-// Without --surface it shows the default model, the Stanford bunny (assets/bunny.obj) refined
-// twice with Loop subdivision. --headless renders N frames (default 1) into an offscreen
+// Without --surface it shows the default scene: the Stanford bunny (assets/bunny.obj, refined
+// twice with Loop subdivision) embedded in a hexahedral cage simulated under gravity, deformed on
+// the GPU with Phong deformation. With --surface it shows that surface as it is. --headless renders N frames (default 1) into an offscreen
 // framebuffer of a hidden window and writes the screenshot; it still needs an X display (run it
 // under xvfb-run on a machine without one).
 
@@ -22,6 +23,7 @@
 #include <exception>
 #include <filesystem>
 #include <iostream>
+#include <memory>
 #include <optional>
 #include <string>
 #include <vector>
@@ -32,8 +34,9 @@
 #include "io/surface_file.h"
 #include "render/offscreen_target.h"
 #include "render/png_image.h"
+#include "render/phong_gpu_deformer.h"
 #include "render/surface_renderer.h"
-#include "subdiv/loop_surface.h"
+#include "sculpt/live_scene.h"
 
 namespace {
 
@@ -85,65 +88,119 @@ Options parseOptions(int argc, char** argv) {
   return options;
 }
 
-/// The surface to show, triangulated, with area-weighted vertex normals, as float arrays.
-struct DisplaySurface {
-  std::vector<float> positions, normals;
-  std::vector<uint32_t> triangles;
+/// What the window shows: something to advance each frame and to draw.
+class View {
+ public:
+  virtual ~View() = default;
+  virtual void advance() {}
+  virtual void draw(const glm::mat4& view, const glm::mat4& projection) const = 0;
+  virtual std::string status() const = 0;
   glm::vec3 centre{0.0f};
   float radius = 1.0f;
 };
 
-DisplaySurface loadDisplaySurface(const Options& options) {
-  sculpt::SurfaceMesh surface;
-  if (options.surface.empty()) {
-    const sculpt::SurfaceMesh bunny =
-        sculpt::readSurfaceFile(SCULPT_SOURCE_DIR "/assets/bunny.obj").surface();
-    surface = sculpt::loopRefine(bunny, 2, true);
-  } else {
-    surface = sculpt::readSurfaceFile(options.surface).surface();
-  }
-  // One normal per position, recomputed from the faces.
-  surface.normals.setZero(surface.positions.rows(), 3);
-  for (auto& corner : surface.faces.values) corner.normal = corner.position;
-  const sculpt::Points normals = sculpt::recomputedNormals(surface, surface.positions,
-                                                           sculpt::normalAnchors(surface));
-  DisplaySurface display;
-  const Eigen::Vector3d lo = surface.positions.colwise().minCoeff().transpose();
-  const Eigen::Vector3d hi = surface.positions.colwise().maxCoeff().transpose();
+const glm::vec3 kSurfaceColour(0.80f, 0.62f, 0.45f);
+
+void frameBounds(View& view, const sculpt::Points& positions) {
+  const Eigen::Vector3d lo = positions.colwise().minCoeff().transpose();
+  const Eigen::Vector3d hi = positions.colwise().maxCoeff().transpose();
   const Eigen::Vector3d centre = 0.5 * (lo + hi);
-  display.centre = glm::vec3(centre.x(), centre.y(), centre.z());
-  display.radius = static_cast<float>(0.5 * (hi - lo).norm());
-  for (Eigen::Index v = 0; v < surface.positions.rows(); ++v)
-    for (int d = 0; d < 3; ++d) {
-      display.positions.push_back(static_cast<float>(surface.positions(v, d)));
-      display.normals.push_back(static_cast<float>(normals(v, d)));
+  view.centre = glm::vec3(centre.x(), centre.y(), centre.z());
+  view.radius = static_cast<float>(0.5 * (hi - lo).norm());
+}
+
+std::vector<float> floats(const sculpt::Points& points) {
+  std::vector<float> out;
+  out.reserve(static_cast<size_t>(points.size()));
+  for (Eigen::Index r = 0; r < points.rows(); ++r)
+    for (int d = 0; d < 3; ++d) out.push_back(static_cast<float>(points(r, d)));
+  return out;
+}
+
+/// A surface file shown as it is (no simulation).
+class StaticSurfaceView : public View {
+ public:
+  explicit StaticSurfaceView(const std::string& path) {
+    sculpt::SurfaceMesh surface = sculpt::readSurfaceFile(path).surface();
+    surface.normals.setZero(surface.positions.rows(), 3);
+    for (auto& corner : surface.faces.values) corner.normal = corner.position;
+    const sculpt::Points normals =
+        sculpt::recomputedNormals(surface, surface.positions, sculpt::normalAnchors(surface));
+    std::vector<uint32_t> triangles;
+    for (uint32_t f = 0; f < surface.numFaces(); ++f) {
+      const auto corners = surface.faces.row(f);
+      for (size_t k = 1; k + 1 < corners.size(); ++k)  // fan: polygons from OBJ files
+        triangles.insert(triangles.end(),
+                         {corners[0].position, corners[k].position, corners[k + 1].position});
     }
-  for (uint32_t f = 0; f < surface.numFaces(); ++f) {
-    const auto corners = surface.faces.row(f);
-    for (size_t k = 1; k + 1 < corners.size(); ++k)  // fan: polygons from OBJ files
-      display.triangles.insert(display.triangles.end(), {corners[0].position,
-                                                         corners[k].position,
-                                                         corners[k + 1].position});
+    triangleCount_ = triangles.size() / 3;
+    renderer_.setTriangles(triangles);
+    renderer_.setVertices(floats(surface.positions), floats(normals));
+    frameBounds(*this, surface.positions);
   }
-  return display;
+  void draw(const glm::mat4& view, const glm::mat4& projection) const override {
+    renderer_.draw(view, projection, kSurfaceColour);
+  }
+  std::string status() const override {
+    return std::to_string(triangleCount_) + " triangles (static)";
+  }
+
+ private:
+  sculpt::render::SurfaceRenderer renderer_;
+  size_t triangleCount_ = 0;
+};
+
+/// The default scene: the bunny embedded in a simulated solid, Phong-deformed on the GPU.
+class LiveSceneView : public View {
+ public:
+  LiveSceneView() : scene_(sculpt::app::LiveScene::buildDefault(SCULPT_SOURCE_DIR)) {
+    std::vector<float> local;
+    for (uint32_t p = 0; p < scene_->embedding().numPoints(); ++p)
+      for (int d = 0; d < 3; ++d) local.push_back(static_cast<float>(scene_->embedding().local(p, d)));
+    deformer_ = std::make_unique<sculpt::render::PhongGpuDeformer>(
+        scene_->cellMesh(), scene_->embedding().cells, local, floats(scene_->restNormals()));
+    deformer_->setTriangles(scene_->triangles());
+    deformer_->setFrame(scene_->nodes(), scene_->nodeGradients(), 0.5f);
+    frameBounds(*this, scene_->restPositions());
+  }
+  void advance() override {
+    scene_->step();
+    deformer_->setFrame(scene_->nodes(), scene_->nodeGradients(), 0.5f);
+  }
+  void draw(const glm::mat4& view, const glm::mat4& projection) const override {
+    deformer_->draw(view, projection, kSurfaceColour);
+  }
+  std::string status() const override {
+    char text[160];
+    std::snprintf(text, sizeof text, "%zu triangles, %u elements, simulation %.1f ms",
+                  scene_->triangles().size() / 3, scene_->numElements(), scene_->lastStepMs());
+    return text;
+  }
+
+ private:
+  std::unique_ptr<sculpt::app::LiveScene> scene_;
+  std::unique_ptr<sculpt::render::PhongGpuDeformer> deformer_;
+};
+
+std::unique_ptr<View> makeView(const Options& options) {
+  if (options.surface.empty()) return std::make_unique<LiveSceneView>();
+  return std::make_unique<StaticSurfaceView>(options.surface);
 }
 
 /// A turntable camera around the model: yaw and pitch in radians, distance in model radii.
 struct OrbitCamera {
   float yaw = 0.5f, pitch = 0.3f, distance = 2.8f;
-  glm::mat4 view(const DisplaySurface& s) const {
+  glm::mat4 view(const View& s) const {
     const glm::vec3 direction(std::cos(pitch) * std::sin(yaw), std::sin(pitch),
                               std::cos(pitch) * std::cos(yaw));
     return glm::lookAt(s.centre + direction * distance * s.radius, s.centre,
                        glm::vec3(0.0f, 1.0f, 0.0f));
   }
-  glm::mat4 projection(const DisplaySurface& s, int width, int height) const {
+  glm::mat4 projection(const View& s, int width, int height) const {
     return glm::perspective(glm::radians(35.0f), static_cast<float>(width) / static_cast<float>(height),
                             0.05f * s.radius, 20.0f * s.radius);
   }
 };
-
-const glm::vec3 kSurfaceColour(0.80f, 0.62f, 0.45f);
 
 void clearBackground() {
   glClearColor(0.16f, 0.17f, 0.19f, 1.0f);
@@ -151,35 +208,28 @@ void clearBackground() {
   glEnable(GL_DEPTH_TEST);
 }
 
-int runHeadless(GLFWwindow*, const Options& options, const DisplaySurface& surface) {
+int runHeadless(GLFWwindow*, const Options& options, View& view) {
   sculpt::render::OffscreenTarget target(options.width, options.height);
-  sculpt::render::SurfaceRenderer renderer;
-  renderer.setTriangles(surface.triangles);
-  renderer.setVertices(surface.positions, surface.normals);
   const OrbitCamera camera;
   for (int frame = 0; frame < options.frames; ++frame) {
+    view.advance();
     target.bind();
     clearBackground();
-    renderer.draw(camera.view(surface), camera.projection(surface, options.width, options.height),
-                  kSurfaceColour);
+    view.draw(camera.view(view), camera.projection(view, options.width, options.height));
   }
   glFinish();
   sculpt::render::writePng(options.screenshot, options.width, options.height, target.readPixels());
   std::cout << "wrote " << options.screenshot << " (" << options.width << "x" << options.height
-            << ", " << surface.triangles.size() / 3 << " triangles, " << options.frames
-            << " frames)\n";
+            << ", " << options.frames << " frames; " << view.status() << ")\n";
   return 0;
 }
 
-int runWindow(GLFWwindow* window, const Options& options, const DisplaySurface& surface) {
+int runWindow(GLFWwindow* window, const Options& options, View& view) {
   IMGUI_CHECKVERSION();
   ImGui::CreateContext();
   ImGui::StyleColorsDark();
   ImGui_ImplGlfw_InitForOpenGL(window, true);
   ImGui_ImplOpenGL3_Init("#version 330 core");
-  sculpt::render::SurfaceRenderer renderer;
-  renderer.setTriangles(surface.triangles);
-  renderer.setVertices(surface.positions, surface.normals);
   OrbitCamera camera;
   double lastX = 0, lastY = 0;
   bool dragging = false;
@@ -220,8 +270,8 @@ int runWindow(GLFWwindow* window, const Options& options, const DisplaySurface& 
     ImGui::Begin("status", nullptr,
                  ImGuiWindowFlags_NoDecoration | ImGuiWindowFlags_NoMove |
                      ImGuiWindowFlags_NoSavedSettings);
-    ImGui::Text("frame %.2f ms   %zu triangles   left drag: orbit, wheel: zoom", frameMs,
-                surface.triangles.size() / 3);
+    ImGui::Text("frame %.2f ms   %s   left drag: orbit, wheel: zoom", frameMs,
+                view.status().c_str());
     ImGui::End();
     ImGui::Render();
     int width, height;
@@ -229,8 +279,9 @@ int runWindow(GLFWwindow* window, const Options& options, const DisplaySurface& 
     glBindFramebuffer(GL_FRAMEBUFFER, 0);
     glViewport(0, 0, width, height);
     clearBackground();
+    view.advance();
     if (width > 0 && height > 0)
-      renderer.draw(camera.view(surface), camera.projection(surface, width, height), kSurfaceColour);
+      view.draw(camera.view(view), camera.projection(view, width, height));
     ImGui_ImplOpenGL3_RenderDrawData(ImGui::GetDrawData());
     glfwSwapBuffers(window);
     const auto now = std::chrono::steady_clock::now();
@@ -274,9 +325,8 @@ int main(int argc, char** argv) {
   glfwSwapInterval(1);
   int status = 0;
   try {
-    const DisplaySurface surface = loadDisplaySurface(options);
-    status = options.headless ? runHeadless(window, options, surface)
-                              : runWindow(window, options, surface);
+    const std::unique_ptr<View> view = makeView(options);
+    status = options.headless ? runHeadless(window, options, *view) : runWindow(window, options, *view);
   } catch (const std::exception& error) {
     std::cerr << "error: " << error.what() << '\n';
     status = 2;
