@@ -3,6 +3,7 @@
 #include <array>
 #include <stdexcept>
 
+#include "render/gl_buffers.h"
 #include "shader_sources.h"
 
 namespace sculpt::render {
@@ -122,12 +123,7 @@ void PhongGpuDeformer::bindFrameTextures(const ShaderProgram& program) const {
 }
 
 void PhongGpuDeformer::setTriangles(std::span<const uint32_t> indices) {
-  glBindVertexArray(vao_);
-  glBindBuffer(GL_ELEMENT_ARRAY_BUFFER, indexBuffer_);
-  glBufferData(GL_ELEMENT_ARRAY_BUFFER, static_cast<GLsizeiptr>(indices.size_bytes()),
-               indices.data(), GL_STATIC_DRAW);
-  glBindVertexArray(0);
-  indexCount_ = static_cast<GLsizei>(indices.size());
+  indexCount_ = uploadTriangleIndices(vao_, indexBuffer_, indices);
 }
 
 void PhongGpuDeformer::draw(const glm::mat4& modelView, const glm::mat4& projection,

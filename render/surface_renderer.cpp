@@ -2,6 +2,7 @@
 
 #include <glm/gtc/type_ptr.hpp>
 
+#include "render/gl_buffers.h"
 #include "shader_sources.h"
 
 namespace sculpt::render {
@@ -31,12 +32,7 @@ SurfaceRenderer::~SurfaceRenderer() {
 }
 
 void SurfaceRenderer::setTriangles(std::span<const uint32_t> indices) {
-  glBindVertexArray(vao_);
-  glBindBuffer(GL_ELEMENT_ARRAY_BUFFER, indexBuffer_);
-  glBufferData(GL_ELEMENT_ARRAY_BUFFER, static_cast<GLsizeiptr>(indices.size_bytes()),
-               indices.data(), GL_STATIC_DRAW);
-  glBindVertexArray(0);
-  indexCount_ = static_cast<GLsizei>(indices.size());
+  indexCount_ = uploadTriangleIndices(vao_, indexBuffer_, indices);
 }
 
 void SurfaceRenderer::setVertices(std::span<const float> positions, std::span<const float> normals) {
