@@ -2,6 +2,9 @@
 
 #include <Eigen/Core>
 #include <algorithm>
+#include <cstdint>
+#include <span>
+#include <vector>
 
 #include "fem/quadrature.h"
 #include "fem/trilinear_shape.h"
@@ -46,13 +49,55 @@ SparseMatrix assembleNodeMatrix(const FemMesh& mesh, MassField field) {
   const Eigen::MatrixXd tricubicN = tricubicShapeTable();
   const Eigen::MatrixXd hexN = linearShapeTable(false);
   const Eigen::MatrixXd pyramidN = linearShapeTable(true);
+  const uint32_t numElements = mesh.numElements();
+  const auto elementNodes = [&](uint32_t e) -> std::span<const uint32_t> {
+    if (e < mesh.numTricubic()) return mesh.tricubicNodes[e];
+    return mesh.linearNodes[e - mesh.numTricubic()];
+  };
 
-  // Element matrices N^T diag(field * V) N, scattered as triplets per element (the duplicates of
-  // repeated pyramid apices and shared nodes are summed by setFromTriplets).
-  std::vector<Eigen::Triplet<double>> triplets;
-  triplets.reserve(size_t(mesh.numTricubic()) * 64 * 64 + size_t(mesh.numLinear()) * 64);
+  // The sparsity pattern first (node j couples with every node of every element around it), so
+  // that element matrices are added in place: triplets would hold 4096 entries per tricubic
+  // element (hundreds of MB for a few thousand elements) only to be sorted and summed.
+  std::vector<uint32_t> elementsBegin(mesh.numNodes() + 1, 0), elementsOfNode;
+  for (uint32_t e = 0; e < numElements; ++e)
+    for (uint32_t j : elementNodes(e)) ++elementsBegin[j + 1];
+  for (uint32_t j = 0; j < mesh.numNodes(); ++j) elementsBegin[j + 1] += elementsBegin[j];
+  elementsOfNode.resize(elementsBegin.back());
+  {
+    std::vector<uint32_t> cursor(elementsBegin.begin(), elementsBegin.end() - 1);
+    for (uint32_t e = 0; e < numElements; ++e)
+      for (uint32_t j : elementNodes(e)) elementsOfNode[cursor[j]++] = e;
+  }
+  SparseMatrix M(mesh.numNodes(), mesh.numNodes());
+  {
+    // Column j: the distinct nodes of the elements around j (a marker array dedupes them, so only
+    // the few hundred distinct rows of each column are sorted).
+    std::vector<uint32_t> marker(mesh.numNodes(), UINT32_MAX);
+    std::vector<std::vector<uint32_t>> columns(mesh.numNodes());
+    Eigen::VectorXi sizes(mesh.numNodes());
+    for (uint32_t j = 0; j < mesh.numNodes(); ++j) {
+      for (uint32_t k = elementsBegin[j]; k < elementsBegin[j + 1]; ++k)
+        for (uint32_t i : elementNodes(elementsOfNode[k]))
+          if (marker[i] != j) {
+            marker[i] = j;
+            columns[j].push_back(i);
+          }
+      std::sort(columns[j].begin(), columns[j].end());
+      sizes[j] = static_cast<int>(columns[j].size());
+    }
+    M.reserve(sizes);
+    for (uint32_t j = 0; j < mesh.numNodes(); ++j)
+      for (uint32_t i : columns[j]) M.insert(static_cast<Eigen::Index>(i), j) = 0.0;
+    M.makeCompressed();
+  }
+  const int* outer = M.outerIndexPtr();
+  const int* inner = M.innerIndexPtr();
+  double* values = M.valuePtr();
+
+  // Element matrices N^T diag(field * V) N, added in place (repeated nodes of pyramid apices
+  // add up like any shared node).
   Eigen::VectorXd weights;
-  for (uint32_t e = 0; e < mesh.numElements(); ++e) {
+  for (uint32_t e = 0; e < numElements; ++e) {
     const uint32_t g0 = mesh.gaussBegin(e), count = mesh.gaussCount(e);
     weights.resize(count);
     for (uint32_t q = 0; q < count; ++q) {
@@ -64,15 +109,16 @@ SparseMatrix assembleNodeMatrix(const FemMesh& mesh, MassField field) {
                                    ? tricubicN
                                    : (mesh.elementType[e] == ElementType::Pyramid ? pyramidN : hexN);
     const Eigen::MatrixXd Me = N.transpose() * weights.asDiagonal() * N;
-    const uint32_t* ids = e < mesh.numTricubic()
-                              ? mesh.tricubicNodes[e].data()
-                              : mesh.linearNodes[e - mesh.numTricubic()].data();
-    for (Eigen::Index a = 0; a < Me.rows(); ++a)
-      for (Eigen::Index b = 0; b < Me.cols(); ++b)
-        triplets.emplace_back(int(ids[a]), int(ids[b]), Me(a, b));
+    const std::span<const uint32_t> ids = elementNodes(e);
+    for (Eigen::Index b = 0; b < Me.cols(); ++b) {
+      const int* begin = inner + outer[ids[b]];
+      const int* end = inner + outer[ids[b] + 1];
+      for (Eigen::Index a = 0; a < Me.rows(); ++a) {
+        const int* at = std::lower_bound(begin, end, static_cast<int>(ids[a]));
+        values[at - inner] += Me(a, b);
+      }
+    }
   }
-  SparseMatrix M(mesh.numNodes(), mesh.numNodes());
-  M.setFromTriplets(triplets.begin(), triplets.end());
   return M;
 }
 
