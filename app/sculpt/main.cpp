@@ -37,6 +37,7 @@
 #include "render/phong_gpu_deformer.h"
 #include "render/surface_renderer.h"
 #include "sculpt/live_scene.h"
+#include "sculpt/simulation_worker.h"
 
 namespace {
 
@@ -46,11 +47,12 @@ struct Options {
   int frames = 1;
   std::string screenshot;
   int width = 1280, height = 800;
+  double quitAfter = 0.0;  ///< window mode: close after this many seconds (smoke tests)
 };
 
 constexpr const char* kUsage =
     "usage: sculpt [--surface FILE.obj|.gltf|.glb] [--headless] [--frames N]\n"
-    "              [--screenshot OUT.png] [--size WxH]\n";
+    "              [--screenshot OUT.png] [--size WxH] [--quit-after SECONDS]\n";
 
 Options parseOptions(int argc, char** argv) {
   Options options;
@@ -76,6 +78,10 @@ Options parseOptions(int argc, char** argv) {
           options.width < 64 || options.height < 64 || options.width > 8192 ||
           options.height > 8192)
         throw std::invalid_argument("--size must be WxH between 64 and 8192");
+    } else if (arg == "--quit-after") {
+      options.quitAfter = std::stod(value());
+      if (!(options.quitAfter > 0.0 && options.quitAfter < 1e6))
+        throw std::invalid_argument("--quit-after must be a positive number of seconds");
     } else if (arg == "--help" || arg == "-h") {
       std::cout << kUsage;
       std::exit(0);
@@ -153,7 +159,10 @@ class StaticSurfaceView : public View {
 /// The default scene: the bunny embedded in a simulated solid, Phong-deformed on the GPU.
 class LiveSceneView : public View {
  public:
-  LiveSceneView() : scene_(sculpt::app::LiveScene::buildDefault(SCULPT_SOURCE_DIR)) {
+  /// `threaded`: the simulation runs on a worker thread (the window); otherwise each frame steps
+  /// once on the calling thread (headless screenshots, reproducible).
+  explicit LiveSceneView(bool threaded)
+      : scene_(sculpt::app::LiveScene::buildDefault(SCULPT_SOURCE_DIR)) {
     std::vector<float> local;
     for (uint32_t p = 0; p < scene_->embedding().numPoints(); ++p)
       for (int d = 0; d < 3; ++d) local.push_back(static_cast<float>(scene_->embedding().local(p, d)));
@@ -162,9 +171,17 @@ class LiveSceneView : public View {
     deformer_->setTriangles(scene_->triangles());
     deformer_->setFrame(scene_->nodes(), scene_->nodeGradients(), 0.5f);
     frameBounds(*this, scene_->restPositions());
+    if (threaded) worker_ = std::make_unique<sculpt::app::SimulationWorker>(*scene_);
   }
+  ~LiveSceneView() override { worker_.reset(); }  // stop the worker before the scene goes
   void advance() override {
+    if (worker_) {
+      if (worker_->fetchNewer(latest_))
+        deformer_->setFrame(latest_.nodes, latest_.gradients, 0.5f);
+      return;
+    }
     scene_->step();
+    latest_.stepMs = scene_->lastStepMs();
     deformer_->setFrame(scene_->nodes(), scene_->nodeGradients(), 0.5f);
   }
   void draw(const glm::mat4& view, const glm::mat4& projection) const override {
@@ -172,18 +189,20 @@ class LiveSceneView : public View {
   }
   std::string status() const override {
     char text[160];
-    std::snprintf(text, sizeof text, "%zu triangles, %u elements, simulation %.1f ms",
-                  scene_->triangles().size() / 3, scene_->numElements(), scene_->lastStepMs());
+    std::snprintf(text, sizeof text, "%zu triangles, %u elements, simulation %.1f ms/step",
+                  scene_->triangles().size() / 3, scene_->numElements(), latest_.stepMs);
     return text;
   }
 
  private:
   std::unique_ptr<sculpt::app::LiveScene> scene_;
   std::unique_ptr<sculpt::render::PhongGpuDeformer> deformer_;
+  std::unique_ptr<sculpt::app::SimulationWorker> worker_;
+  sculpt::app::PublishedState latest_;
 };
 
 std::unique_ptr<View> makeView(const Options& options) {
-  if (options.surface.empty()) return std::make_unique<LiveSceneView>();
+  if (options.surface.empty()) return std::make_unique<LiveSceneView>(!options.headless);
   return std::make_unique<StaticSurfaceView>(options.surface);
 }
 
@@ -234,8 +253,13 @@ int runWindow(GLFWwindow* window, const Options& options, View& view) {
   double lastX = 0, lastY = 0;
   bool dragging = false;
   auto last = std::chrono::steady_clock::now();
+  const auto started = last;
   double frameMs = 0.0;
   while (!glfwWindowShouldClose(window)) {
+    if (options.quitAfter > 0.0 &&
+        std::chrono::duration<double>(std::chrono::steady_clock::now() - started).count() >
+            options.quitAfter)
+      glfwSetWindowShouldClose(window, 1);
     glfwPollEvents();
     ImGui_ImplOpenGL3_NewFrame();
     ImGui_ImplGlfw_NewFrame();
@@ -291,7 +315,6 @@ int runWindow(GLFWwindow* window, const Options& options, View& view) {
   ImGui_ImplOpenGL3_Shutdown();
   ImGui_ImplGlfw_Shutdown();
   ImGui::DestroyContext();
-  (void)options;
   return 0;
 }
 

@@ -88,9 +88,16 @@ TEST_F(HeadlessWindow, DefaultSceneScreenshotShowsTheCentredObject) {
   EXPECT_NEAR(sy / count, image.height / 2.0, 0.12 * image.height);
 }
 
+// The interactive window with its simulation worker thread runs (ImGui, GPU deformation, the
+// worker publishing states) and closes cleanly.
+TEST_F(HeadlessWindow, WindowWithSimulationWorkerRunsAndQuits) {
+  EXPECT_EQ(run("--quit-after 2 --size 800x600"), 0);
+}
+
 TEST_F(HeadlessWindow, BadInputIsExit2) {
   EXPECT_EQ(run("--frobnicate"), 2);
   EXPECT_EQ(run("--headless"), 2);  // needs --screenshot
+  EXPECT_EQ(run("--quit-after -1"), 2);
   EXPECT_EQ(run("--headless --surface /nonexistent.obj --screenshot " +
                 (dir_ / "x.png").string()),
             2);
