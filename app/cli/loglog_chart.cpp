@@ -7,14 +7,9 @@
 #include <string_view>
 
 #include "io/atomic_file.h"
+#include "io/png_encoder.h"
 
-// stb's PNG writer stays private to this file: Debian's tinygltf library exports the same
-// symbols, so ours are static. No stdio: the bytes go to a string.
-#define STB_IMAGE_WRITE_IMPLEMENTATION
-#define STB_IMAGE_WRITE_STATIC
-#define STBI_WRITE_NO_STDIO
 #include <stb_easy_font.h>
-#include <stb_image_write.h>
 
 namespace sculpt {
 
@@ -410,16 +405,8 @@ std::string renderLogLogChartPng(const LogLogChart& chart) {
   canvas.text(chart.yLabel, 16, centreY + textWidth(chart.yLabel, kTextScale) / 2, kTextScale, kInk,
               /*rotated=*/true);
 
-  // Encode
-  std::string png;
-  const auto append = [](void* context, void* data, int size) {
-    static_cast<std::string*>(context)->append(static_cast<const char*>(data), std::size_t(size));
-  };
-  if (!stbi_write_png_to_func(append, &png, canvas.width(), canvas.height(), 3, canvas.data(),
-                              canvas.width() * 3)) {
-    throw std::runtime_error("log-log chart: PNG encoding failed");
-  }
-  return png;
+  return encodePng(canvas.width(), canvas.height(), 3,
+                   {canvas.data(), static_cast<size_t>(canvas.width()) * canvas.height() * 3});
 }
 
 void writeLogLogChartPng(const std::filesystem::path& path, const LogLogChart& chart) {
