@@ -17,6 +17,7 @@
 #include "cli/cli_common.h"
 #include "cli/commands.h"
 #include "cli/bench_deform.h"
+#include "cli/bench_timing.h"
 #include "cli/fem_options.h"
 #include "mesh/topology.h"
 #include "sim/standard_forms.h"
@@ -65,17 +66,7 @@ std::vector<OptionSpec> allOptions() {
 constexpr int kApplyRuns = 51;
 constexpr int kWarmupSteps = 3;
 
-using Clock = std::chrono::steady_clock;
-
-double millisecondsSince(Clock::time_point start) {
-  return std::chrono::duration<double, std::milli>(Clock::now() - start).count();
-}
-
-double median(std::vector<double> samples) {
-  std::sort(samples.begin(), samples.end());
-  const size_t n = samples.size();
-  return n % 2 == 1 ? samples[n / 2] : 0.5 * (samples[n / 2 - 1] + samples[n / 2]);
-}
+using Clock = BenchClock;
 
 // Median time of `runs` calls, after one untimed call that sizes buffers and warms caches.
 template <typename F>

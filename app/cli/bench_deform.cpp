@@ -7,6 +7,7 @@
 // (single precision, cell-sorted structure of arrays, all worker threads).
 
 #include "cli/bench_deform.h"
+#include "cli/bench_timing.h"
 
 #include <algorithm>
 #include <chrono>
@@ -28,11 +29,7 @@ const OptionSpec kBenchDeformOptions[3] = {{"vertices", true}, {"method", true},
 
 namespace {
 
-using Clock = std::chrono::steady_clock;
-
-double millisecondsSince(Clock::time_point start) {
-  return std::chrono::duration<double, std::milli>(Clock::now() - start).count();
-}
+using Clock = BenchClock;
 
 /// N points on a bumpy sphere (Fibonacci spiral order: neighbours in the list are neighbours in
 /// space, as in a real mesh's vertex order).
@@ -110,10 +107,6 @@ int benchDeform(const CliArgs& args) {
       ratios.push_back(total / linear);
     }
   }
-  const auto median = [](std::vector<double>& v) {
-    std::sort(v.begin(), v.end());
-    return v[v.size() / 2];
-  };
   const double medianMs = median(samples);
   std::cerr << "bench deform: per frame, gradients and cell coefficients " << median(nodeStage)
             << " ms, points " << median(pointStage) << " ms (medians)\n";
