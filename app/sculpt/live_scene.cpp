@@ -19,10 +19,8 @@ std::unique_ptr<LiveScene> LiveScene::buildDefault(const std::string& sourceDir)
   const SurfaceMesh bunny = readSurfaceFile(sourceDir + "/assets/bunny.obj").surface();
 
   // Display surface: Loop-refined twice onto the limit surface, one normal per vertex.
-  SurfaceMesh display = loopRefine(bunny, 2, true);
-  display.normals.setZero(display.positions.rows(), 3);
-  for (auto& corner : display.faces.values) corner.normal = corner.position;
-  scene->restNormals_ = recomputedNormals(display, display.positions, normalAnchors(display));
+  const SurfaceMesh display = loopRefine(bunny, 2, true);
+  scene->restNormals_ = vertexNormals(display);
   scene->restPositions_ = display.positions;
   for (const SurfaceCorner& corner : display.faces.values)
     scene->triangles_.push_back(corner.position);

@@ -127,11 +127,8 @@ std::vector<float> floats(const sculpt::Points& points) {
 class StaticSurfaceView : public View {
  public:
   explicit StaticSurfaceView(const std::string& path) {
-    sculpt::SurfaceMesh surface = sculpt::readSurfaceFile(path).surface();
-    surface.normals.setZero(surface.positions.rows(), 3);
-    for (auto& corner : surface.faces.values) corner.normal = corner.position;
-    const sculpt::Points normals =
-        sculpt::recomputedNormals(surface, surface.positions, sculpt::normalAnchors(surface));
+    const sculpt::SurfaceMesh surface = sculpt::readSurfaceFile(path).surface();
+    const sculpt::Points normals = sculpt::vertexNormals(surface);
     std::vector<uint32_t> triangles;
     for (uint32_t f = 0; f < surface.numFaces(); ++f) {
       const auto corners = surface.faces.row(f);

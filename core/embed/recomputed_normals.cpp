@@ -67,4 +67,12 @@ Points recomputedNormals(const SurfaceMesh& surface, const Points& deformed,
   return out;
 }
 
+Points vertexNormals(const SurfaceMesh& surface) {
+  // Normal i belongs to position i at every corner; zero rest normals keep the faces' winding.
+  SurfaceMesh perVertex = surface;
+  perVertex.normals.setZero(surface.positions.rows(), 3);
+  for (SurfaceCorner& corner : perVertex.faces.values) corner.normal = corner.position;
+  return recomputedNormals(perVertex, perVertex.positions, normalAnchors(perVertex));
+}
+
 }  // namespace sculpt

@@ -24,4 +24,8 @@ namespace sculpt {
 Points recomputedNormals(const SurfaceMesh& surface, const Points& deformed,
                          std::span<const uint32_t> anchors);
 
+/// One area-weighted normal per position of `surface` (whatever normals it had are ignored):
+/// the smooth normals of a surface read without normals, such as a Loop-refined mesh.
+Points vertexNormals(const SurfaceMesh& surface);
+
 }  // namespace sculpt

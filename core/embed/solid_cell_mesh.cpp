@@ -1,23 +1,10 @@
 #include "embed/solid_cell_mesh.h"
 
 #include <algorithm>
-#include <utility>
 
 #include "io/vtk_writer.h"
 
 namespace sculpt {
-namespace {
-
-/// Appends a tetrahedron, swapping two nodes if needed so that it is positively oriented.
-void addOriented(VolumeMesh& mesh, std::array<uint32_t, 4> nodes) {
-  mesh.addTetrahedron(nodes);
-  if (tetrahedronSignedVolume(mesh, mesh.numCells() - 1) < 0.0) {
-    auto& values = mesh.cells.values;
-    std::swap(values[values.size() - 1], values[values.size() - 2]);
-  }
-}
-
-}  // namespace
 
 Points SolidCellMesh::nodePositions(const Points& vertexPositions) const {
   Points nodes(numVertices + centreVertices.numRows(), 3);
@@ -62,7 +49,7 @@ SolidCellMesh solidCellMesh(const CellComplex& complex, const Topology& topology
       const size_t n = face.size();
       const size_t first = static_cast<size_t>(std::min_element(face.begin(), face.end()) - face.begin());
       for (size_t k = 1; k + 1 < n; ++k)
-        addOriented(solid.mesh, {face[first], face[(first + k) % n], face[(first + k + 1) % n], centre});
+        addPositiveTetrahedron(solid.mesh, {face[first], face[(first + k) % n], face[(first + k + 1) % n], centre});
     }
   }
   return solid;

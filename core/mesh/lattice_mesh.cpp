@@ -2,7 +2,6 @@
 
 #include <algorithm>
 #include <random>
-#include <utility>
 
 namespace sculpt {
 namespace {
@@ -61,11 +60,7 @@ VolumeMesh tetLattice(const LatticeSpec& spec) {
             corner[order[step]] = 1;
             tet[step + 1] = latticeNode(spec, i + corner[0], j + corner[1], k + corner[2]);
           }
-          mesh.addTetrahedron(tet);
-          if (tetrahedronSignedVolume(mesh, mesh.numCells() - 1) < 0.0) {
-            auto& values = mesh.cells.values;
-            std::swap(values[values.size() - 1], values[values.size() - 2]);
-          }
+          addPositiveTetrahedron(mesh, tet);
         }
   return mesh;
 }

@@ -4,6 +4,7 @@
 #include <algorithm>
 #include <cmath>
 #include <cstdio>
+#include <utility>
 
 namespace sculpt {
 namespace {
@@ -110,6 +111,14 @@ void splitWedge(VolumeMesh& mesh, const std::array<uint32_t, 6>& nodes) {
     mesh.addTetrahedron({v[0], v[4], v[2], v[5]});
   }
   mesh.addTetrahedron({v[0], v[4], v[5], v[3]});
+}
+
+void addPositiveTetrahedron(VolumeMesh& mesh, const std::array<uint32_t, 4>& nodes) {
+  mesh.addTetrahedron(nodes);
+  if (tetrahedronSignedVolume(mesh, mesh.numCells() - 1) < 0.0) {
+    auto& values = mesh.cells.values;
+    std::swap(values[values.size() - 1], values[values.size() - 2]);
+  }
 }
 
 double tetrahedronSignedVolume(const VolumeMesh& mesh, uint32_t cell) {

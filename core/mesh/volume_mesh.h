@@ -36,6 +36,10 @@ struct VolumeMesh {
   }
 };
 
+/// Appends a tetrahedron, swapping its last two nodes when needed so that it is positively
+/// oriented (builders that know the four nodes but not their order).
+void addPositiveTetrahedron(VolumeMesh& mesh, const std::array<uint32_t, 4>& nodes);
+
 /// Appends the two tetrahedra of a pyramid (base 0,1,2,3 counter-clockwise seen from the apex 4,
 /// as in VTK and Gmsh). The base is cut along the diagonal through its smallest node id, so that
 /// a neighbour sharing the quadrilateral cuts it the same way.
