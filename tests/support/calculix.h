@@ -1,4 +1,5 @@
 #pragma once
+#include "support/shell_quote.h"
 // A CalculiX (ccx) harness for tests: builds linear-elastic hexahedral models, writes a ccx
 // input deck, runs `ccx` in a private temporary directory and reads back the nodal
 // displacements. It exists so that our own mechanics can be compared against an independent,
@@ -307,13 +308,6 @@ inline std::string readWholeFile(const std::filesystem::path& p) {
   return s.str();
 }
 
-/// Single-quoted for sh.
-inline std::string shellQuote(const std::string& s) {
-  std::string q = "'";
-  for (char c : s) q += (c == '\'') ? std::string("'\\''") : std::string(1, c);
-  return q + "'";
-}
-
 /// The *ERROR lines of a ccx log (with the line after each, which usually carries the
 /// detail), else its tail: enough to tell why a run failed.
 inline std::string logExcerpt(const std::string& log) {
@@ -395,7 +389,7 @@ inline std::optional<CcxResult> runCalculix(const CcxModel& model, std::string* 
     }
   }
 
-  const std::string command = "cd " + detail::shellQuote(guard.dir.string()) +
+  const std::string command = "cd " + shellQuote(guard.dir.string()) +
                               " && OMP_NUM_THREADS=1 ccx -i job > ccx.log 2>&1";
   const int status = std::system(command.c_str());
   CcxResult result;

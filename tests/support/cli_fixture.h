@@ -1,4 +1,5 @@
 #pragma once
+#include "support/shell_quote.h"
 // sculpt-cli end to end: a GoogleTest fixture that runs the built binary in a fresh temporary
 // folder per test and captures its exit status, stdout and stderr, plus the small text helpers the
 // CLI tests share. A suite derives from CliFixture, naming its folder prefix:
@@ -23,6 +24,10 @@
 #include <vector>
 
 namespace sculpt::test {
+
+/// Short name for shellQuote in command lines of the CLI tests.
+inline std::string quote(const std::string& text) { return shellQuote(text); }
+
 
 /// The built sculpt-cli.
 inline const std::string kCli = SCULPT_BINARY_DIR "/bin/sculpt-cli";
@@ -53,12 +58,6 @@ struct CliResult {
   }
 };
 
-/// Single-quoted for sh.
-inline std::string quote(const std::string& text) {
-  std::string quoted = "'";
-  for (char ch : text) quoted += ch == '\'' ? std::string("'\\''") : std::string(1, ch);
-  return quoted + "'";
-}
 
 inline std::string readText(const std::filesystem::path& path) {
   std::ifstream in(path, std::ios::binary);

@@ -1,4 +1,5 @@
 #pragma once
+#include "support/shell_quote.h"
 // TetGen for tests: closed triangulated surfaces (a box, an icosphere), meshed into tetrahedra by
 // the real `tetgen` program and loaded with our TetGen reader. It gives tests realistic
 // unstructured volume meshes of known volume without storing them. Everything depends only on
@@ -172,13 +173,6 @@ inline std::string number(double value) {
   return std::string(buffer, result.ptr);
 }
 
-/// Single-quoted for sh.
-inline std::string shellQuoted(const std::string& s) {
-  std::string quoted = "'";
-  for (const char c : s) quoted += (c == '\'') ? std::string("'\\''") : std::string(1, c);
-  return quoted + "'";
-}
-
 /// The surface as a TetGen .smesh file (1-based numbering, no holes, no regions).
 inline std::string smeshText(const TriangleSurface& surface) {
   std::string out = "# part 1: nodes\n" + std::to_string(surface.vertices.size()) + " 3 0 0\n";
@@ -221,7 +215,7 @@ inline std::optional<VolumeMesh> tetgenMesh(const TriangleSurface& surface, doub
       return std::nullopt;
     }
   }
-  const std::string command = "cd " + tetgen_detail::shellQuoted(workDir.string()) +
+  const std::string command = "cd " + shellQuote(workDir.string()) +
                               " && tetgen -pq1.4a" + tetgen_detail::number(maxTetVolume) +
                               "Q surface.smesh > tetgen.log 2>&1";
   if (std::system(command.c_str()) != 0) {
