@@ -85,6 +85,16 @@ std::vector<RigidMotion> rigidMotions() {
   return motions;
 }
 
+/// The level-K nodes of `model` after moving its control points rigidly by `m`.
+Points movedNodes(const FemModel& model, const RigidMotion& m) {
+  Points control = model.restControl();
+  for (Eigen::Index i = 0; i < control.rows(); ++i)
+    control.row(i) = (m.Q * control.row(i).transpose() + m.t).transpose();
+  Points nodes;
+  model.nodesFromControl(control, nodes);
+  return nodes;
+}
+
 struct Case {
   std::string name;
   CellComplex control;
@@ -127,11 +137,7 @@ TEST(RigidMotion, ZeroForceAndEnergyForEveryElementType) {
       const double forceScale = material.youngs * L * L;       // force of a unit strain
       const double energyScale = material.youngs * volume;     // energy of a unit strain
       for (const RigidMotion& m : rigidMotions()) {
-        Points control = model->restControl();
-        for (Eigen::Index i = 0; i < control.rows(); ++i)
-          control.row(i) = (m.Q * control.row(i).transpose() + m.t).transpose();
-        Points nodes;
-        model->nodesFromControl(control, nodes);
+        const Points nodes = movedNodes(*model, m);
         kernel.updateRotations(nodes);
         double rotationError = 0;
         for (const Eigen::Matrix3d& R : kernel.rotations())
@@ -184,15 +190,11 @@ TEST(RigidMotion, WholeModelThroughControlPoints) {
   const double L = std::cbrt(model->mesh().restVolume() / model->mesh().numElements());
   double worst = 0;
   for (const RigidMotion& m : rigidMotions()) {
-    Points control = model->restControl();
-    for (Eigen::Index i = 0; i < control.rows(); ++i)
-      control.row(i) = (m.Q * control.row(i).transpose() + m.t).transpose();
-    Points nodes;
-    model->nodesFromControl(control, nodes);
+    const Points nodes = movedNodes(*model, m);
     kernel.updateRotations(nodes);
     Points gradient = Points::Zero(nodes.rows(), 3);
     kernel.addGradient(nodes, gradient);
-    Points reduced = Points::Zero(control.rows(), 3);
+    Points reduced = Points::Zero(model->restControl().rows(), 3);
     model->addToControl(gradient, reduced);
     worst = std::max(worst, reduced.cwiseAbs().maxCoeff() / (Material{}.youngs * L * L));
   }
