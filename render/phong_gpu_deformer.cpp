@@ -1,6 +1,9 @@
 #include "render/phong_gpu_deformer.h"
 
+#include <algorithm>
 #include <array>
+#include <iterator>
+#include <string>
 #include <stdexcept>
 
 #include "render/gl_buffers.h"
@@ -10,6 +13,18 @@ namespace sculpt::render {
 namespace {
 
 constexpr std::array<const char*, 2> kFeedback = {"deformedPosition", "deformedNormal"};
+
+/// The surface fragment shader: lighting and the colour map prepended.
+std::string surfaceFragmentSource() {
+  return shaderSource({shaders::kLightingGlsl, shaders::kColourMapGlsl}, shaders::kPhongSurfaceFrag);
+}
+
+/// Replaces the contents of a texture buffer.
+void uploadBuffer(GLuint buffer, const void* data, size_t bytes, GLenum usage) {
+  glBindBuffer(GL_TEXTURE_BUFFER, buffer);
+  glBufferData(GL_TEXTURE_BUFFER, static_cast<GLsizeiptr>(bytes), data, usage);
+  glBindBuffer(GL_TEXTURE_BUFFER, 0);
+}
 
 /// A buffer texture over a new buffer with `bytes` of `data`.
 void makeBufferTexture(GLuint& buffer, GLuint& texture, GLenum format, const void* data,
@@ -38,9 +53,9 @@ PhongGpuDeformer::PhongGpuDeformer(const VolumeMesh& rest, std::span<const uint3
                                    std::span<const float> local,
                                    std::span<const float> restNormals)
     : program_("phong_deform", shaders::kPhongDeformVert, nullptr, kFeedback),
-      drawProgram_("phong_surface", shaders::kPhongDeformVert,
-                   litFragmentSource(shaders::kPhongSurfaceFrag).c_str()),
-      numVertices_(static_cast<uint32_t>(cells.size())) {
+      drawProgram_("phong_surface", shaders::kPhongDeformVert, surfaceFragmentSource().c_str()),
+      numVertices_(static_cast<uint32_t>(cells.size())),
+      numCells_(rest.numCells()) {
   if (local.size() != 3 * cells.size() || restNormals.size() != 3 * cells.size())
     throw std::invalid_argument("PhongGpuDeformer: per-vertex arrays differ in length");
   // Static cell table: 8 node ids per cell, -1 padding for tetrahedra.
@@ -58,6 +73,15 @@ PhongGpuDeformer::PhongGpuDeformer(const VolumeMesh& rest, std::span<const uint3
                     restNodes.size() * sizeof(float), GL_STATIC_DRAW);
   makeBufferTexture(frameBuffer_, frameTexture_, GL_RGBA32F, nullptr,
                     16 * sizeof(float) * rest.numNodes(), GL_STREAM_DRAW);
+  // Until a field or the attribute neighbours arrive: zero cell values, one dummy neighbour.
+  const std::vector<float> zeros(std::max<size_t>(numCells_, 1), 0.0f);
+  makeBufferTexture(cellFieldBuffer_, cellFieldTexture_, GL_R32F, zeros.data(),
+                    zeros.size() * sizeof(float), GL_DYNAMIC_DRAW);
+  const int32_t noNode = 0;
+  makeBufferTexture(attributeNodesBuffer_, attributeNodesTexture_, GL_R32I, &noNode,
+                    sizeof noNode, GL_STATIC_DRAW);
+  makeBufferTexture(attributeWeightsBuffer_, attributeWeightsTexture_, GL_R32F, zeros.data(),
+                    sizeof(float), GL_STATIC_DRAW);
 
   glGenVertexArrays(1, &vao_);
   glBindVertexArray(vao_);
@@ -70,6 +94,10 @@ PhongGpuDeformer::PhongGpuDeformer(const VolumeMesh& rest, std::span<const uint3
   normalBuffer_ = makeVertexBuffer(restNormals.data(), restNormals.size_bytes());
   glEnableVertexAttribArray(2);
   glVertexAttribPointer(2, 3, GL_FLOAT, GL_FALSE, 0, nullptr);
+  const std::vector<int32_t> noNeighbours(2 * static_cast<size_t>(numVertices_), 0);
+  neighbourRangeBuffer_ = makeVertexBuffer(noNeighbours.data(), noNeighbours.size() * sizeof(int32_t));
+  glEnableVertexAttribArray(3);
+  glVertexAttribIPointer(3, 2, GL_INT, 0, nullptr);
   glGenBuffers(1, &indexBuffer_);
   glBindBuffer(GL_ELEMENT_ARRAY_BUFFER, indexBuffer_);
   glBindVertexArray(0);
@@ -82,17 +110,22 @@ PhongGpuDeformer::PhongGpuDeformer(const VolumeMesh& rest, std::span<const uint3
 }
 
 PhongGpuDeformer::~PhongGpuDeformer() {
-  const GLuint buffers[] = {cellBuffer_,      localBuffer_, normalBuffer_,   cellNodesBuffer_,
-                            restNodesBuffer_, frameBuffer_, feedbackBuffer_, indexBuffer_};
-  glDeleteBuffers(8, buffers);
-  const GLuint textures[] = {cellNodesTexture_, restNodesTexture_, frameTexture_};
-  glDeleteTextures(3, textures);
+  const GLuint buffers[] = {cellBuffer_,           localBuffer_,           normalBuffer_,
+                            cellNodesBuffer_,      restNodesBuffer_,       frameBuffer_,
+                            feedbackBuffer_,       indexBuffer_,           neighbourRangeBuffer_,
+                            attributeNodesBuffer_, attributeWeightsBuffer_, cellFieldBuffer_};
+  glDeleteBuffers(static_cast<GLsizei>(std::size(buffers)), buffers);
+  const GLuint textures[] = {cellNodesTexture_, restNodesTexture_, frameTexture_,
+                             attributeNodesTexture_, attributeWeightsTexture_, cellFieldTexture_};
+  glDeleteTextures(static_cast<GLsizei>(std::size(textures)), textures);
   glDeleteVertexArrays(1, &vao_);
 }
 
 void PhongGpuDeformer::setFrame(
     const Eigen::Matrix<double, Eigen::Dynamic, 3, Eigen::RowMajor>& nodes,
-    const std::vector<Eigen::Matrix3d>& gradients, float alpha) {
+    const std::vector<Eigen::Matrix3d>& gradients, InterpolationMethod method) {
+  if (method == InterpolationMethod::Attribute && !hasAttribute_)
+    throw std::logic_error("PhongGpuDeformer: the attribute method needs its neighbours first");
   // 4 texels per node: x_i, then the three rows of F_i (zero when gradients are not given).
   std::vector<float> data(16 * static_cast<size_t>(nodes.rows()), 0.0f);
   for (Eigen::Index i = 0; i < nodes.rows(); ++i) {
@@ -102,24 +135,73 @@ void PhongGpuDeformer::setFrame(
       for (int r = 0; r < 3; ++r)
         for (int c = 0; c < 3; ++c) node[4 * (r + 1) + c] = static_cast<float>(gradients[i](r, c));
   }
-  glBindBuffer(GL_TEXTURE_BUFFER, frameBuffer_);
-  glBufferData(GL_TEXTURE_BUFFER, static_cast<GLsizeiptr>(data.size() * sizeof(float)), data.data(),
-               GL_STREAM_DRAW);
-  glBindBuffer(GL_TEXTURE_BUFFER, 0);
-  alpha_ = alpha;
+  frameUploadBytes_ = data.size() * sizeof(float);
+  uploadBuffer(frameBuffer_, data.data(), frameUploadBytes_, GL_STREAM_DRAW);
+  attribute_ = method == InterpolationMethod::Attribute;
+  // The attribute method keeps the Phong normal (it has no useful gradient of its own).
+  alpha_ = attribute_ ? 0.5f : static_cast<float>(gradientBlend(method));
+}
+
+void PhongGpuDeformer::setAttributeNeighbours(const CompressedRows<NodeWeight>& neighbours) {
+  if (neighbours.numRows() != numVertices_)
+    throw std::invalid_argument("PhongGpuDeformer: attribute neighbours for " +
+                                std::to_string(neighbours.numRows()) + " vertices, expected " +
+                                std::to_string(numVertices_));
+  std::vector<int32_t> ranges(2 * static_cast<size_t>(numVertices_));
+  for (uint32_t v = 0; v < numVertices_; ++v) {
+    ranges[2 * v] = static_cast<int32_t>(neighbours.offsets[v]);
+    ranges[2 * v + 1] = static_cast<int32_t>(neighbours.rowSize(v));
+  }
+  std::vector<int32_t> nodes;
+  std::vector<float> weights;
+  nodes.reserve(neighbours.values.size());
+  weights.reserve(neighbours.values.size());
+  for (const NodeWeight& w : neighbours.values) {
+    nodes.push_back(static_cast<int32_t>(w.node));
+    weights.push_back(static_cast<float>(w.weight));
+  }
+  if (nodes.empty()) nodes.push_back(0), weights.push_back(0.0f);  // keep the buffers non-empty
+  glBindBuffer(GL_ARRAY_BUFFER, neighbourRangeBuffer_);
+  glBufferData(GL_ARRAY_BUFFER, static_cast<GLsizeiptr>(ranges.size() * sizeof(int32_t)),
+               ranges.data(), GL_STATIC_DRAW);
+  glBindBuffer(GL_ARRAY_BUFFER, 0);
+  uploadBuffer(attributeNodesBuffer_, nodes.data(), nodes.size() * sizeof(int32_t), GL_STATIC_DRAW);
+  uploadBuffer(attributeWeightsBuffer_, weights.data(), weights.size() * sizeof(float),
+               GL_STATIC_DRAW);
+  hasAttribute_ = true;
+}
+
+void PhongGpuDeformer::setCellField(std::span<const float> values) {
+  if (values.size() != numCells_)
+    throw std::invalid_argument("PhongGpuDeformer: " + std::to_string(values.size()) +
+                                " cell field values for " + std::to_string(numCells_) + " cells");
+  if (values.empty()) return;
+  uploadBuffer(cellFieldBuffer_, values.data(), values.size_bytes(), GL_DYNAMIC_DRAW);
 }
 
 void PhongGpuDeformer::bindFrameTextures(const ShaderProgram& program) const {
   program.use();
-  const GLuint textures[] = {cellNodesTexture_, restNodesTexture_, frameTexture_};
-  const char* samplers[] = {"cellNodes", "restNodes", "frameNodes"};
-  for (int unit = 0; unit < 3; ++unit) {
+  const GLuint textures[] = {cellNodesTexture_,     restNodesTexture_,        frameTexture_,
+                             attributeNodesTexture_, attributeWeightsTexture_, cellFieldTexture_};
+  const char* samplers[] = {"cellNodes",      "restNodes",        "frameNodes",
+                            "attributeNodes", "attributeWeights", "cellField"};
+  for (int unit = 0; unit < 6; ++unit) {
     glActiveTexture(static_cast<GLenum>(GL_TEXTURE0 + unit));
     glBindTexture(GL_TEXTURE_BUFFER, textures[unit]);
     glUniform1i(program.uniform(samplers[unit]), unit);
   }
   glActiveTexture(GL_TEXTURE0);
   glUniform1f(program.uniform("alpha"), alpha_);
+  glUniform1i(program.uniform("attributeMethod"), attribute_ ? 1 : 0);
+}
+
+void PhongGpuDeformer::drawTriangles(const ShaderProgram& program, const glm::mat4& modelView,
+                                     const glm::mat4& projection) const {
+  glUniformMatrix4fv(program.uniform("modelView"), 1, GL_FALSE, &modelView[0][0]);
+  glUniformMatrix4fv(program.uniform("projection"), 1, GL_FALSE, &projection[0][0]);
+  glBindVertexArray(vao_);
+  glDrawElements(GL_TRIANGLES, indexCount_, GL_UNSIGNED_INT, nullptr);
+  glBindVertexArray(0);
 }
 
 void PhongGpuDeformer::setTriangles(std::span<const uint32_t> indices) {
@@ -127,14 +209,32 @@ void PhongGpuDeformer::setTriangles(std::span<const uint32_t> indices) {
 }
 
 void PhongGpuDeformer::draw(const glm::mat4& modelView, const glm::mat4& projection,
-                            const glm::vec3& colour) const {
-  bindFrameTextures(drawProgram_);
-  glUniformMatrix4fv(drawProgram_.uniform("modelView"), 1, GL_FALSE, &modelView[0][0]);
-  glUniformMatrix4fv(drawProgram_.uniform("projection"), 1, GL_FALSE, &projection[0][0]);
-  glUniform3f(drawProgram_.uniform("baseColour"), colour.x, colour.y, colour.z);
-  glBindVertexArray(vao_);
-  glDrawElements(GL_TRIANGLES, indexCount_, GL_UNSIGNED_INT, nullptr);
-  glBindVertexArray(0);
+                            const SurfaceStyle& style) const {
+  const ShaderProgram& program = drawProgram_;
+  bindFrameTextures(program);
+  glUniform3f(program.uniform("baseColour"), style.colour.x, style.colour.y, style.colour.z);
+  glUniform1i(program.uniform("fieldMode"), static_cast<int>(style.field));
+  glUniform2f(program.uniform("fieldRange"), style.fieldLow, style.fieldHigh);
+  glUniform1i(program.uniform("flatShading"), style.flatShading ? 1 : 0);
+  glUniform4f(program.uniform("solidColour"), 0.0f, 0.0f, 0.0f, 0.0f);
+  // Without clipping the plane keeps everything (some drivers clip on written distances anyway).
+  const glm::vec4 plane = style.clip ? style.clipPlane : glm::vec4(0.0f, 0.0f, 0.0f, 1.0f);
+  glUniform4f(program.uniform("clipPlane"), plane.x, plane.y, plane.z, plane.w);
+  if (style.clip) glEnable(GL_CLIP_DISTANCE0);
+  if (style.wireframe) {  // push the fill back so the edges drawn next win the depth test
+    glEnable(GL_POLYGON_OFFSET_FILL);
+    glPolygonOffset(1.0f, 1.0f);
+  }
+  drawTriangles(program, modelView, projection);
+  if (style.wireframe) {
+    glDisable(GL_POLYGON_OFFSET_FILL);
+    glUniform4f(program.uniform("solidColour"), style.wireColour.x, style.wireColour.y,
+                style.wireColour.z, 1.0f);
+    glPolygonMode(GL_FRONT_AND_BACK, GL_LINE);
+    drawTriangles(program, modelView, projection);
+    glPolygonMode(GL_FRONT_AND_BACK, GL_FILL);
+  }
+  if (style.clip) glDisable(GL_CLIP_DISTANCE0);
 }
 
 void PhongGpuDeformer::capture(std::vector<float>& positions, std::vector<float>& normals) const {
@@ -142,6 +242,7 @@ void PhongGpuDeformer::capture(std::vector<float>& positions, std::vector<float>
   const float identity[16] = {1, 0, 0, 0, 0, 1, 0, 0, 0, 0, 1, 0, 0, 0, 0, 1};
   glUniformMatrix4fv(program_.uniform("modelView"), 1, GL_FALSE, identity);
   glUniformMatrix4fv(program_.uniform("projection"), 1, GL_FALSE, identity);
+  glUniform1i(program_.uniform("fieldMode"), 0);
   glBindVertexArray(vao_);
   glEnable(GL_RASTERIZER_DISCARD);
   glBindBufferBase(GL_TRANSFORM_FEEDBACK_BUFFER, 0, feedbackBuffer_);

@@ -3,6 +3,8 @@
 // on the GPU as static per-vertex cell index, local coordinates and rest normal; each frame
 // uploads only node positions and node gradients (O(nodes)). The CPU deformer of core/embed is
 // the reference: capture() reads the shader's results back through transform feedback.
+// Methods: linear, vertex and phong from the node gradients; attribute (for comparison) from
+// per-vertex metaball neighbours uploaded once when first needed.
 
 #include <cstdint>
 #include <span>
@@ -11,11 +13,28 @@
 #include <Eigen/Core>
 #include <glm/glm.hpp>
 
+#include "embed/attribute_transfer.h"
+#include "embed/interpolation_method.h"
 #include "mesh/volume_mesh.h"
 #include "render/gl.h"
 #include "render/shader_program.h"
 
 namespace sculpt::render {
+
+/// A scalar shown on the surface through the colour map.
+enum class SurfaceField { None = 0, PerCell = 1, Displacement = 2 };
+
+/// How draw() shades the deformed surface.
+struct SurfaceStyle {
+  glm::vec3 colour{0.80f, 0.62f, 0.45f};
+  bool flatShading = false;  ///< facet normals instead of the analytic ones
+  bool wireframe = false;    ///< overlay the triangle edges
+  glm::vec3 wireColour{0.08f, 0.08f, 0.10f};
+  SurfaceField field = SurfaceField::None;
+  float fieldLow = 0.0f, fieldHigh = 1.0f;  ///< values at the ends of the colour map
+  bool clip = false;                        ///< keep only dot(clipPlane.xyz, x) <= clipPlane.w
+  glm::vec4 clipPlane{0.0f, 0.0f, 1.0f, 0.0f};
+};
 
 class PhongGpuDeformer {
  public:
@@ -28,21 +47,30 @@ class PhongGpuDeformer {
   PhongGpuDeformer(const PhongGpuDeformer&) = delete;
   PhongGpuDeformer& operator=(const PhongGpuDeformer&) = delete;
 
-  /// Uploads node positions (#nodes by 3) and node gradients F_i; alpha = 0 linear, 1/2 Phong,
-  /// 1 vertex model.
+  /// Uploads node positions (#nodes by 3) and node gradients F_i (O(nodes)); `method` picks the
+  /// interpolation. Attribute needs setAttributeNeighbours() first (std::logic_error otherwise).
   void setFrame(const Eigen::Matrix<double, Eigen::Dynamic, 3, Eigen::RowMajor>& nodes,
-                const std::vector<Eigen::Matrix3d>& gradients, float alpha);
+                const std::vector<Eigen::Matrix3d>& gradients, InterpolationMethod method);
+  /// Per vertex, its attribute-method neighbour nodes and weights (attributeTransferWeights).
+  void setAttributeNeighbours(const CompressedRows<NodeWeight>& neighbours);
+  bool hasAttributeNeighbours() const { return hasAttribute_; }
+  /// One value per cell for SurfaceField::PerCell (O(cells)).
+  void setCellField(std::span<const float> values);
+  /// Bytes sent by the last setFrame (the per-frame upload).
+  size_t frameUploadBytes() const { return frameUploadBytes_; }
   /// Runs the vertex shader over all vertices with transform feedback: 3 position and 3 normal
   /// floats per vertex.
   void capture(std::vector<float>& positions, std::vector<float>& normals) const;
   /// Triangle indices (3 per triangle) of the embedded surface, uploaded once.
   void setTriangles(std::span<const uint32_t> indices);
   /// Draws the deformed surface (the vertex shader deforms, the fragment shader lights).
-  void draw(const glm::mat4& modelView, const glm::mat4& projection, const glm::vec3& colour) const;
+  void draw(const glm::mat4& modelView, const glm::mat4& projection, const SurfaceStyle& style) const;
   uint32_t numVertices() const { return numVertices_; }
 
  private:
   void bindFrameTextures(const ShaderProgram& program) const;
+  void drawTriangles(const ShaderProgram& program, const glm::mat4& modelView,
+                     const glm::mat4& projection) const;
 
   ShaderProgram program_;      ///< transform feedback (capture)
   ShaderProgram drawProgram_;  ///< the same vertex shader with lighting
@@ -53,8 +81,14 @@ class PhongGpuDeformer {
   GLuint restNodesBuffer_ = 0, restNodesTexture_ = 0;
   GLuint frameBuffer_ = 0, frameTexture_ = 0;
   GLuint feedbackBuffer_ = 0;
-  uint32_t numVertices_ = 0;
+  GLuint neighbourRangeBuffer_ = 0;  ///< per vertex (first, count) of the attribute method
+  GLuint attributeNodesBuffer_ = 0, attributeNodesTexture_ = 0;
+  GLuint attributeWeightsBuffer_ = 0, attributeWeightsTexture_ = 0;
+  GLuint cellFieldBuffer_ = 0, cellFieldTexture_ = 0;
+  uint32_t numVertices_ = 0, numCells_ = 0;
   float alpha_ = 0.5f;
+  bool attribute_ = false, hasAttribute_ = false;
+  size_t frameUploadBytes_ = 0;
 };
 
 }  // namespace sculpt::render

@@ -38,9 +38,13 @@ GLuint compile(std::string_view name, GLenum kind, const char* source) {
 
 }  // namespace
 
-std::string litFragmentSource(const char* body) {
-  return std::string("#version 330 core\n") + shaders::kLightingGlsl + body;
+std::string shaderSource(std::initializer_list<const char*> libraries, const char* body) {
+  std::string source = "#version 330 core\n";
+  for (const char* library : libraries) source += library;
+  return source + body;
 }
+
+std::string litFragmentSource(const char* body) { return shaderSource({shaders::kLightingGlsl}, body); }
 
 ShaderProgram::ShaderProgram(std::string_view name, const char* vertexSource,
                              const char* fragmentSource,

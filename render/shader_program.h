@@ -1,6 +1,7 @@
 #pragma once
 // A linked GLSL program from vertex and fragment source, with the compiler's log in the error.
 
+#include <initializer_list>
 #include <span>
 #include <string>
 #include <string_view>
@@ -9,8 +10,10 @@
 
 namespace sculpt::render {
 
-/// A fragment shader body with the version line and the shared lighting functions in front
-/// (GLSL 3.30 has no #include).
+/// A shader body with the version line and shared GLSL function files (e.g.
+/// shaders::kColourMapGlsl) in front, in order: GLSL 3.30 has no #include.
+std::string shaderSource(std::initializer_list<const char*> libraries, const char* body);
+/// shaderSource with the shared lighting functions (lighting.glsl).
 std::string litFragmentSource(const char* body);
 
 class ShaderProgram {

@@ -3,21 +3,32 @@
 //   f(X) = sum_i beta_i (x_i + H_i (X - X_i)),   H_i = alpha F_i,
 // evaluated from its cell and local coordinates, with per-frame node data in a buffer texture
 // (O(nodes) upload), and the normal from the gradient of f (cofactor of grad f times the rest
-// normal). alpha = 0 is linear interpolation, 1/2 Phong, 1 the vertex model.
+// normal). alpha = 0 is linear interpolation, 1/2 Phong, 1 the vertex model. The attribute method
+// (Houdini's Point Deform, for comparison) instead moves the rest point by the weighted node
+// displacements of its precomputed metaball neighbours, and keeps the Phong normal.
+// Also passes a scalar field value to the fragment shader and clips against one plane.
 
 layout(location = 0) in int cell;          // cell index
 layout(location = 1) in vec3 local;        // tet: (beta1, beta2, beta3); hex: (s, t, u)
 layout(location = 2) in vec3 restNormal;
+layout(location = 3) in ivec2 neighbours;  // attribute method: first index and count
 
 uniform isamplerBuffer cellNodes;   // 8 node ids per cell; a tet has -1 in slots 4..7
 uniform samplerBuffer restNodes;    // rest position X_i per node (xyz of RGBA)
 uniform samplerBuffer frameNodes;   // 4 texels per node: x_i, then the rows of F_i
 uniform float alpha;
+uniform bool attributeMethod;
+uniform isamplerBuffer attributeNodes;    // attribute method: neighbour node ids
+uniform samplerBuffer attributeWeights;   // and their normalised weights
+uniform int fieldMode;                    // 0 none, 1 per cell (cellField), 2 displacement length
+uniform samplerBuffer cellField;
+uniform vec4 clipPlane;                   // kept where dot(xyz, position) <= w
 uniform mat4 modelView;
 uniform mat4 projection;
 
 out vec3 deformedPosition;
 out vec3 deformedNormal;
+out float fieldValue;
 
 void main() {
   int nodes[8];
@@ -72,6 +83,17 @@ void main() {
   mat3 cofactor = mat3(cross(G[1], G[2]), cross(G[2], G[0]), cross(G[0], G[1]));
   vec3 n = cofactor * restNormal;
   deformedNormal = length(n) > 0.0 ? normalize(n) : restNormal;
+  if (attributeMethod) {
+    position = X;
+    for (int k = 0; k < neighbours.y; ++k) {
+      int node = texelFetch(attributeNodes, neighbours.x + k).r;
+      position += texelFetch(attributeWeights, neighbours.x + k).r *
+                  (texelFetch(frameNodes, 4 * node).xyz - texelFetch(restNodes, node).xyz);
+    }
+  }
   deformedPosition = position;
+  fieldValue = fieldMode == 1 ? texelFetch(cellField, cell).r
+                              : (fieldMode == 2 ? length(position - X) : 0.0);
+  gl_ClipDistance[0] = clipPlane.w - dot(clipPlane.xyz, position);
   gl_Position = projection * modelView * vec4(position, 1.0);
 }

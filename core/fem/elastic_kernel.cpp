@@ -108,6 +108,11 @@ double ElasticKernel::energy(const Points& nodes) const {
   return run(nodes, Mode::Gradient, nullptr, true);
 }
 
+void ElasticKernel::elementEnergies(const Points& nodes, std::vector<double>& energies) const {
+  energies.assign(mesh_.numElements(), 0.0);
+  run(nodes, Mode::Gradient, nullptr, true, energies.data());
+}
+
 void ElasticKernel::addGradient(const Points& nodes, Points& gradient) const {
   run(nodes, Mode::Gradient, &gradient, false);
 }
@@ -116,7 +121,8 @@ void ElasticKernel::addHessianProduct(const Points& dx, Points& result) const {
   run(dx, Mode::HessianProduct, &result, false);
 }
 
-double ElasticKernel::run(const Points& x, Mode mode, Points* out, bool withEnergy) const {
+double ElasticKernel::run(const Points& x, Mode mode, Points* out, bool withEnergy,
+                          double* perElement) const {
   const bool withRestTerm = mode == Mode::Gradient;  // x holds positions, not a direction
   const Points& rest = mesh_.restNodes;
   const uint32_t numTricubic = mesh_.numTricubic();
@@ -154,18 +160,21 @@ double ElasticKernel::run(const Points& x, Mode mode, Points* out, bool withEner
             ue[n * 3 + c] = withRestTerm ? x(ids[n], c) - rest(ids[n], c) : x(ids[n], c);
         if (sink) std::fill(ge, ge + count * 3, 0.0);
         double* gradient = sink ? ge : nullptr;
+        double elementEnergy;
         if (tricubic) {
           const TricubicPacked packed{tricubicInverseJacobian_.data() + size_t(e) * 576,
                                       tricubicVolumeLambda_.data() + size_t(e) * 64,
                                       tricubicVolumeMu_.data() + size_t(e) * 64};
-          energy += tricubicElementKernel(ue, packed, R, withRestTerm, withEnergy, gradient);
+          elementEnergy = tricubicElementKernel(ue, packed, R, withRestTerm, withEnergy, gradient);
         } else {
           const size_t l = e - numTricubic;
           const LinearPacked packed{linearShapeGradient_.data() + l * 192,
                                     linearVolumeLambda_.data() + l * 8,
                                     linearVolumeMu_.data() + l * 8};
-          energy += linearElementKernel(ue, packed, R, withRestTerm, withEnergy, gradient);
+          elementEnergy = linearElementKernel(ue, packed, R, withRestTerm, withEnergy, gradient);
         }
+        energy += elementEnergy;
+        if (perElement) perElement[e] = elementEnergy;
         if (!sink) continue;
         for (int n = 0; n < count; ++n)
           for (int c = 0; c < 3; ++c) (*sink)(ids[n], c) += ge[n * 3 + c];

@@ -29,6 +29,9 @@ class ElasticKernel {
 
   /// E(nodes) with the current rotations.
   double energy(const Points& nodes) const;
+  /// The terms of E(nodes), one per element (with the current rotations): energies[e] is the
+  /// elastic energy of element e (J); they sum to energy(nodes). For strain energy densities.
+  void elementEnergies(const Points& nodes, std::vector<double>& energies) const;
   /// gradient += dE/dx at `nodes` (= minus the elastic node forces).
   void addGradient(const Points& nodes, Points& gradient) const;
   /// result += H dx, H the Hessian of E (rotations fixed).
@@ -41,8 +44,9 @@ class ElasticKernel {
  private:
   enum class Mode { Gradient, HessianProduct };
   // Runs the element kernels; accumulates into `out` when non-null and returns the energy when
-  // `withEnergy` (gradient mode only).
-  double run(const Points& x, Mode mode, Points* out, bool withEnergy) const;
+  // `withEnergy` (gradient mode only), storing each element's term in `perElement` if non-null.
+  double run(const Points& x, Mode mode, Points* out, bool withEnergy,
+             double* perElement = nullptr) const;
 
   const FemMesh& mesh_;
   std::vector<Eigen::Matrix3d> rotations_;

@@ -1,53 +1,38 @@
 #include "io/obj_writer.h"
 
-#include <vector>
-
 #include "io/atomic_file.h"
 #include "io/number_text.h"
+#include "mesh/boundary_surface.h"
 
 namespace sculpt {
 
 std::string boundaryObj(const CellComplex& complex, const Topology& topology,
                         BoundarySurfaceCounts* counts) {
-  // Number the vertices the boundary uses, in increasing original order, from 1.
-  constexpr uint32_t kUnused = 0;
-  std::vector<uint32_t> objIndex(complex.numVertices(), kUnused);
-  uint32_t numFaces = 0;
-  for (uint32_t f = 0; f < topology.numFaces(); ++f) {
-    if (!topology.faceIsBoundary[f]) continue;
-    ++numFaces;
-    for (uint32_t v : topology.faceVertices.row(f)) objIndex[v] = 1;
-  }
-  uint32_t numVertices = 0;
-  for (uint32_t& index : objIndex) {
-    if (index != kUnused) index = ++numVertices;
-  }
-
+  const BoundarySurface boundary = boundarySurface(complex, topology);
+  const SurfaceMesh& surface = boundary.surface;
   std::string out = "# sculpt boundary surface: ";
-  appendNumber(out, numVertices);
+  appendNumber(out, surface.numVertices());
   out += " vertices, ";
-  appendNumber(out, numFaces);
+  appendNumber(out, surface.numFaces());
   out += " faces\n";
-  for (uint32_t v = 0; v < complex.numVertices(); ++v) {
-    if (objIndex[v] == kUnused) continue;
+  for (uint32_t v = 0; v < surface.numVertices(); ++v) {
     out += 'v';
     for (Eigen::Index k = 0; k < 3; ++k) {
       out += ' ';
-      appendNumber(out, complex.positions(v, k));
+      appendNumber(out, surface.positions(v, k));
     }
     out += '\n';
   }
-  // A boundary face has one cell, faceCells[f][0], and the stored loop is outward for it.
-  for (uint32_t f = 0; f < topology.numFaces(); ++f) {
-    if (!topology.faceIsBoundary[f]) continue;
+  // OBJ numbers vertices from 1.
+  for (uint32_t f = 0; f < surface.numFaces(); ++f) {
     out += 'f';
-    for (uint32_t v : topology.faceVertices.row(f)) {
+    for (const SurfaceCorner& corner : surface.faces.row(f)) {
       out += ' ';
-      appendNumber(out, objIndex[v]);
+      appendNumber(out, corner.position + 1);
     }
     out += '\n';
   }
-  if (counts != nullptr) *counts = {numVertices, numFaces};
+  if (counts != nullptr) *counts = {surface.numVertices(), surface.numFaces()};
   return out;
 }
 

@@ -1,5 +1,6 @@
 // The GPU Phong deformer (vertex shader, read back by transform feedback) against the CPU
-// reference of core/embed, on jittered tet and hex lattices, for linear, vertex and phong.
+// reference of core/embed, on jittered tet and hex lattices, for linear, vertex, phong and
+// attribute.
 // Tolerance: 1e-5 of the bounding-box diagonal (single precision on the GPU).
 
 #include <gtest/gtest.h>
@@ -78,6 +79,8 @@ TEST_F(GpuPhongDeformer, GpuAndCpuDeformersAgreeOnTetsAndHexes) {
         restNormals.push_back(static_cast<float>(normals(p, d)));
       }
     render::PhongGpuDeformer gpu(mesh, cpu.embedding().cells, local, restNormals);
+    gpu.setAttributeNeighbours(
+        attributeTransferWeights(mesh.positions, points, cpu.attributeRadius()));
     Points nodes(mesh.positions.rows(), 3);
     for (Eigen::Index i = 0; i < nodes.rows(); ++i)
       nodes.row(i) = smoothMap(mesh.positions.row(i).transpose()).transpose();
@@ -88,11 +91,14 @@ TEST_F(GpuPhongDeformer, GpuAndCpuDeformersAgreeOnTetsAndHexes) {
     std::vector<uint32_t> anchors(cpu.numPoints());
     for (uint32_t p = 0; p < cpu.numPoints(); ++p) anchors[p] = p;
     for (InterpolationMethod method :
-         {InterpolationMethod::Linear, InterpolationMethod::Vertex, InterpolationMethod::Phong}) {
+         {InterpolationMethod::Linear, InterpolationMethod::Vertex, InterpolationMethod::Phong,
+          InterpolationMethod::Attribute}) {
       cpu.setFrame(nodes, method);
       const Points expected = cpu.positions();
       const Points expectedNormals = cpu.deformNormals(normals, anchors);
-      gpu.setFrame(nodes, gradients, static_cast<float>(gradientBlend(method)));
+      gpu.setFrame(nodes, gradients, method);
+      // O(nodes): 16 floats per node, whatever the number of embedded vertices.
+      EXPECT_EQ(gpu.frameUploadBytes(), 16 * sizeof(float) * mesh.numNodes());
       std::vector<float> positions, gpuNormals;
       gpu.capture(positions, gpuNormals);
       double worst = 0.0, worstNormal = 0.0;

@@ -1,13 +1,17 @@
 // The window program under a real X display (Xvfb in scripts/test.sh): it opens an OpenGL 3.3
-// core context, renders the default scene offscreen and writes a screenshot that shows the
-// background and the object, centred, without black (NaN) pixels.
+// core context, simulates the default scene for 60 frames, renders offscreen and writes
+// screenshots that show the background and the object, centred, without black (NaN) pixels; the
+// panels; and the colour bar exactly when a field is shown.
 
 #include <gtest/gtest.h>
 
 #include <cstdlib>
 #include <filesystem>
+#include <fstream>
 #include <string>
 #include <unistd.h>
+
+#include "render/colour_map.h"
 
 #define STB_IMAGE_STATIC
 #define STB_IMAGE_IMPLEMENTATION
@@ -58,50 +62,143 @@ class HeadlessWindow : public ::testing::Test {
   fs::path dir_;
 };
 
-TEST_F(HeadlessWindow, DefaultSceneScreenshotShowsTheCentredObject) {
-  const fs::path shot = dir_ / "default.png";
-  ASSERT_EQ(run("--headless --frames 3 --size 640x400 --screenshot " + shot.string()), 0);
-  const Image image = load(shot);
-  ASSERT_EQ(image.width, 640);
-  ASSERT_EQ(image.height, 400);
-  // Background in the corners.
-  for (auto [x, y] : {std::pair{2, 2}, {637, 2}, {2, 397}, {637, 397}})
-    EXPECT_TRUE(isBackground(image.at(x, y))) << x << ',' << y;
-  // The object: enough non-background pixels, none black, centred.
-  double count = 0;
-  double sx = 0, sy = 0;
+struct Coverage {
+  double fraction = 0, cx = 0, cy = 0;
   int black = 0;
+};
+
+/// Non-background pixels of an image: how much, where, and how many are black.
+Coverage coverage(const Image& image) {
+  Coverage c;
+  double count = 0;
   for (int y = 0; y < image.height; ++y)
     for (int x = 0; x < image.width; ++x) {
       const unsigned char* p = image.at(x, y);
       if (isBackground(p)) continue;
-      ++count, sx += x, sy += y;
-      if (p[0] + p[1] + p[2] < 15) ++black;
+      ++count, c.cx += x, c.cy += y;
+      if (p[0] + p[1] + p[2] < 15) ++c.black;
     }
-  const double fraction = static_cast<double>(count) / (image.width * image.height);
-  std::printf("[ measured ] object covers %.1f%% of the image, centroid (%.0f, %.0f), %d black\n",
-              100 * fraction, sx / count, sy / count, black);
-  EXPECT_GT(fraction, 0.10);
-  EXPECT_LT(fraction, 0.80);
-  EXPECT_EQ(black, 0);
-  EXPECT_NEAR(sx / count, image.width / 2.0, 0.12 * image.width);
-  EXPECT_NEAR(sy / count, image.height / 2.0, 0.12 * image.height);
+  c.fraction = count / (image.width * image.height);
+  if (count > 0) c.cx /= count, c.cy /= count;
+  return c;
 }
 
-// The interactive window with its simulation worker thread runs (ImGui, GPU deformation, the
-// worker publishing states) and closes cleanly.
+/// Pixels within `tolerance` (per channel, 8 bits) of the colour map's value at t.
+int colourMapPixels(const Image& image, float t, int x0, int y0, int x1, int y1, int tolerance) {
+  const glm::vec3 c = sculpt::render::colourMap(t);
+  const int r = static_cast<int>(c.x * 255 + 0.5f), g = static_cast<int>(c.y * 255 + 0.5f),
+            b = static_cast<int>(c.z * 255 + 0.5f);
+  int count = 0;
+  for (int y = y0; y < y1; ++y)
+    for (int x = x0; x < x1; ++x) {
+      const unsigned char* p = image.at(x, y);
+      if (std::abs(p[0] - r) <= tolerance && std::abs(p[1] - g) <= tolerance &&
+          std::abs(p[2] - b) <= tolerance)
+        ++count;
+    }
+  return count;
+}
+
+TEST_F(HeadlessWindow, DefaultSceneAfter60FramesShowsTheCentredObject) {
+  const fs::path shot = dir_ / "default.png";
+  ASSERT_EQ(run("--headless --no-ui --no-grid --frames 60 --size 640x400 --screenshot " +
+                shot.string()),
+            0);
+  const Image image = load(shot);
+  ASSERT_EQ(image.width, 640);
+  ASSERT_EQ(image.height, 400);
+  for (auto [x, y] : {std::pair{2, 2}, {637, 2}, {2, 397}, {637, 397}})
+    EXPECT_TRUE(isBackground(image.at(x, y))) << x << ',' << y;
+  const Coverage c = coverage(image);
+  std::printf("[ measured ] object covers %.1f%% of the image, centroid (%.0f, %.0f), %d black\n",
+              100 * c.fraction, c.cx, c.cy, c.black);
+  EXPECT_GT(c.fraction, 0.10);
+  EXPECT_LT(c.fraction, 0.80);
+  EXPECT_EQ(c.black, 0);
+  EXPECT_NEAR(c.cx, image.width / 2.0, 0.12 * image.width);
+  EXPECT_NEAR(c.cy, image.height / 2.0, 0.12 * image.height);
+}
+
+// The full window: panels around the 3D view, and the colour bar in the view's lower right
+// corner exactly when a field is shown (its top and bottom colours are the ends of the map).
+TEST_F(HeadlessWindow, PanelsAndColourBarWhenAFieldIsShown) {
+  const fs::path withField = dir_ / "field.png", without = dir_ / "plain.png";
+  ASSERT_EQ(run("--headless --frames 60 --field displacement --size 1280x800 --screenshot " +
+                withField.string()),
+            0);
+  ASSERT_EQ(run("--headless --frames 60 --size 1280x800 --screenshot " + without.string()), 0);
+  const Image field = load(withField), plain = load(without);
+  ASSERT_EQ(field.width, 1280);
+  ASSERT_EQ(plain.width, 1280);
+  // The left panel (x < 170) and the right panel (x > 960) are ImGui windows, not the 3D view's
+  // background colour.
+  EXPECT_FALSE(isBackground(field.at(60, 400)));
+  EXPECT_FALSE(isBackground(field.at(1200, 700)));
+  // The legend sits in the 3D view's lower right corner: x in [820, 960), y in [450, 775).
+  const int x0 = 800, x1 = 960, y0 = 420, y1 = 775;
+  const int highWith = colourMapPixels(field, 1.0f, x0, y0, x1, y1, 6);
+  const int lowWith = colourMapPixels(field, 0.0f, x0, y0, x1, y1, 6);
+  const int highWithout = colourMapPixels(plain, 1.0f, x0, y0, x1, y1, 6);
+  const int lowWithout = colourMapPixels(plain, 0.0f, x0, y0, x1, y1, 6);
+  std::printf("[ measured ] colour bar ends: %d high, %d low pixels with the field; %d, %d without\n",
+              highWith, lowWith, highWithout, lowWithout);
+  EXPECT_GE(highWith, 40);
+  EXPECT_GE(lowWith, 40);
+  EXPECT_EQ(highWithout, 0);
+  EXPECT_EQ(lowWithout, 0);
+  // The object is drawn, with the field's colours and no black pixels.
+  const Coverage c = coverage(field);
+  EXPECT_EQ(c.black, 0);
+}
+
+// Supersampled screenshots keep the requested size; a transparent one has alpha 0 in the corners
+// and an opaque object.
+TEST_F(HeadlessWindow, SupersampledTransparentScreenshot) {
+  const fs::path shot = dir_ / "transparent.png";
+  ASSERT_EQ(run("--headless --no-ui --no-grid --frames 2 --supersample 2 --transparent --size "
+                "320x200 --screenshot " + shot.string()),
+            0);
+  const Image image = load(shot);
+  ASSERT_EQ(image.width, 320);
+  ASSERT_EQ(image.height, 200);
+  EXPECT_EQ(image.at(1, 1)[3], 0);
+  EXPECT_EQ(image.at(318, 198)[3], 0);
+  EXPECT_EQ(image.at(160, 100)[3], 255);
+}
+
+TEST_F(HeadlessWindow, ControlMeshSceneBuildsAndSteps) {
+  const fs::path shot = dir_ / "block3.png";
+  ASSERT_EQ(run("--headless --no-ui --frames 5 --size 320x200 --scene " SCULPT_SOURCE_DIR
+                "/assets/block3.json --screenshot " + shot.string()),
+            0);
+  const Coverage c = coverage(load(shot));
+  EXPECT_GT(c.fraction, 0.05);
+  EXPECT_EQ(c.black, 0);
+}
+
+// The interactive window with its builder and simulation threads runs (ImGui, GPU deformation,
+// the worker publishing states) and closes cleanly.
 TEST_F(HeadlessWindow, WindowWithSimulationWorkerRunsAndQuits) {
-  EXPECT_EQ(run("--quit-after 2 --size 800x600"), 0);
+  EXPECT_EQ(run("--quit-after 3 --size 800x600"), 0);
+  std::ifstream out(dir_ / "out.txt");
+  const std::string text((std::istreambuf_iterator<char>(out)), std::istreambuf_iterator<char>());
+  EXPECT_NE(text.find("first frame with the scene after"), std::string::npos) << text;
 }
 
 TEST_F(HeadlessWindow, BadInputIsExit2) {
   EXPECT_EQ(run("--frobnicate"), 2);
   EXPECT_EQ(run("--headless"), 2);  // needs --screenshot
   EXPECT_EQ(run("--quit-after -1"), 2);
-  EXPECT_EQ(run("--headless --surface /nonexistent.obj --screenshot " +
-                (dir_ / "x.png").string()),
-            2);
+  EXPECT_EQ(run("--field pressure"), 2);
+  EXPECT_EQ(run("--supersample 3"), 2);
+  EXPECT_EQ(run("--headless --scene /nonexistent.obj --screenshot " + (dir_ / "x.png").string()), 2);
   EXPECT_FALSE(fs::exists(dir_ / "x.png"));
+  const fs::path bad = dir_ / "bad.json";
+  std::ofstream(bad) << "{\"format\": \"sculpt-control-mesh\", \"vertices\": [[0,0,";
+  EXPECT_EQ(run("--headless --scene " + bad.string() + " --screenshot " + (dir_ / "y.png").string()), 2);
+  std::ifstream err(dir_ / "err.txt");
+  const std::string text((std::istreambuf_iterator<char>(err)), std::istreambuf_iterator<char>());
+  EXPECT_NE(text.find("bad.json"), std::string::npos) << text;
 }
 
 }  // namespace

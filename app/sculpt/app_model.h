@@ -1,0 +1,77 @@
+#pragma once
+// The window's state as the panels see it: what they show, what they edit, and the requests they
+// leave for the application to carry out after the UI pass (the panels never call the simulation
+// or the renderer directly).
+
+#include <array>
+#include <chrono>
+#include <cstdint>
+#include <optional>
+#include <string>
+#include <vector>
+
+#include "render/camera.h"
+#include "sculpt/display_settings.h"
+#include "sculpt/navigation.h"
+#include "sculpt/scene_controller.h"
+#include "sculpt/scene_view.h"
+
+namespace sculpt::app {
+
+struct ScreenshotSettings {
+  int supersample = 1;         ///< 1, 2 or 4
+  bool transparent = false;    ///< clear to alpha 0
+  bool includePanels = false;  ///< the whole window rather than the 3D view
+  std::string folder = "screenshots";
+};
+
+/// What the panels ask for; cleared every frame after the application has acted on it.
+struct Requests {
+  bool screenshot = false, frameModel = false, frameAll = false, toggleOrthographic = false;
+  std::optional<render::StandardView> standardView;
+  bool togglePlay = false, stepOnce = false, reset = false;
+  bool applySettings = false;  ///< the edited SceneSettings (rebuilds when needed)
+  std::string loadScene;       ///< a path to load; empty: none
+  bool cancelBuild = false, quit = false, uiScaleChanged = false;
+};
+
+/// Figures for the status strip.
+struct Status {
+  double frameMs = 0, simulationMs = 0, deformationMs = 0, uploadMs = 0;
+  size_t uploadBytes = 0, triangles = 0, nodes = 0;
+  std::array<uint32_t, 3> elementCounts{};  ///< tricubic, trilinear, pyramid
+  double simulatedTime = 0, stepsPerSecond = 0;
+  bool physicsReady = false, playing = true;
+  std::string description, lastStepMessage;
+  BuildStatus build;
+};
+
+struct Toast {
+  std::string text;
+  std::chrono::steady_clock::time_point until;
+  bool error = false;
+};
+
+struct AppModel {
+  SceneSettings settings;  ///< as edited in the panels (applied on request)
+  DisplaySettings display;
+  NavigationPreset preset = NavigationPreset::Blender;
+  ScreenshotSettings screenshot;
+  Status status;
+  FieldRange fieldRange;  ///< the colour map's range this frame
+  std::string sceneFile;  ///< the scene shown (empty: the default bunny)
+  std::array<char, 1024> scenePathInput{};
+  bool showHelp = false, showPanels = true;
+  float uiScale = 1.0f;
+  std::vector<Toast> toasts;
+  Requests requests;
+
+  void toast(std::string text, bool error = false, double seconds = 4.0) {
+    toasts.push_back({std::move(text),
+                      std::chrono::steady_clock::now() +
+                          std::chrono::milliseconds(static_cast<int>(seconds * 1000)),
+                      error});
+  }
+};
+
+}  // namespace sculpt::app

@@ -1,0 +1,154 @@
+#include "sculpt/options.h"
+
+#include <cstdio>
+#include <iostream>
+#include <stdexcept>
+
+namespace sculpt::app {
+
+const char* const kUsage =
+    "usage: sculpt [options]\n"
+    "  --scene FILE           control mesh (.json) or surface (.obj, .gltf, .glb) to simulate;\n"
+    "                         default: the Stanford bunny in a hexahedral cage\n"
+    "  --level K              simulation level (1..3)\n"
+    "  --method M             phong | linear | vertex | attribute\n"
+    "  --field F              none | youngs | density | displacement | strain\n"
+    "  --clip x|y|z           clipping plane through the middle of the solid\n"
+    "  --wireframe --flat --show-cells --show-control --no-grid\n"
+    "  --preset blender|stylus  mouse navigation preset (default blender)\n"
+    "  --ui-scale S           1..3 (default: the monitor's content scale)\n"
+    "  --headless             render offscreen (needs an X display: use xvfb-run without one)\n"
+    "  --screenshot OUT.png   headless: write the last frame there\n"
+    "  --frames N             headless: frames to simulate and draw (default 60)\n"
+    "  --supersample 1|2|4    screenshot resolution factor (downsampled)\n"
+    "  --transparent          screenshot with a transparent background\n"
+    "  --no-ui                headless: the 3D view without panels\n"
+    "  --bench N              headless: time N frames and print key=value figures\n"
+    "  --size WxH             window size (default 1280x800)\n"
+    "  --quit-after SECONDS   close the window after that long (smoke tests)\n";
+
+namespace {
+
+int intIn(const std::string& option, const std::string& text, int lo, int hi) {
+  size_t used = 0;
+  int value = 0;
+  try {
+    value = std::stoi(text, &used);
+  } catch (const std::exception&) {
+    used = 0;
+  }
+  if (used != text.size() || value < lo || value > hi)
+    throw std::invalid_argument(option + " must be an integer in " + std::to_string(lo) + ".." +
+                                std::to_string(hi) + " (got '" + text + "')");
+  return value;
+}
+
+double positive(const std::string& option, const std::string& text) {
+  size_t used = 0;
+  double value = 0;
+  try {
+    value = std::stod(text, &used);
+  } catch (const std::exception&) {
+    used = 0;
+  }
+  if (used != text.size() || !(value > 0.0 && value < 1e6))
+    throw std::invalid_argument(option + " must be a positive number (got '" + text + "')");
+  return value;
+}
+
+}  // namespace
+
+Options parseOptions(int argc, char** argv, bool* helpShown) {
+  Options options;
+  bool framesGiven = false;
+  for (int i = 1; i < argc; ++i) {
+    const std::string arg = argv[i];
+    const auto value = [&]() -> std::string {
+      if (i + 1 >= argc) throw std::invalid_argument(arg + " needs a value");
+      return argv[++i];
+    };
+    if (arg == "--scene" || arg == "--surface") {
+      options.scene = value();
+    } else if (arg == "--level") {
+      options.level = intIn(arg, value(), 1, 3);
+    } else if (arg == "--method") {
+      const std::string name = value();
+      const auto method = parseInterpolationMethod(name);
+      if (!method)
+        throw std::invalid_argument("--method must be phong, linear, vertex or attribute (got '" +
+                                    name + "')");
+      options.display.method = *method;
+    } else if (arg == "--field") {
+      const std::string name = value();
+      const auto field = parseField(name);
+      if (!field)
+        throw std::invalid_argument(
+            "--field must be none, youngs, density, displacement or strain (got '" + name + "')");
+      options.display.field = *field;
+    } else if (arg == "--clip") {
+      const std::string axis = value();
+      if (axis != "x" && axis != "y" && axis != "z")
+        throw std::invalid_argument("--clip must be x, y or z (got '" + axis + "')");
+      options.display.clip = true;
+      options.display.clipAxis = axis[0] - 'x';
+    } else if (arg == "--wireframe") {
+      options.display.wireframe = true;
+    } else if (arg == "--flat") {
+      options.display.flatShading = true;
+    } else if (arg == "--show-cells") {
+      options.display.showCells = true;
+    } else if (arg == "--show-control") {
+      options.display.showControlMesh = true;
+    } else if (arg == "--no-grid") {
+      options.display.showGrid = options.display.showAxes = false;
+    } else if (arg == "--preset") {
+      const std::string name = value();
+      if (name != "blender" && name != "stylus")
+        throw std::invalid_argument("--preset must be blender or stylus (got '" + name + "')");
+      options.stylusPreset = name == "stylus";
+    } else if (arg == "--ui-scale") {
+      options.uiScale = static_cast<float>(positive(arg, value()));
+      if (options.uiScale < 1.0f || options.uiScale > 3.0f)
+        throw std::invalid_argument("--ui-scale must be in 1..3");
+    } else if (arg == "--headless") {
+      options.headless = true;
+    } else if (arg == "--frames") {
+      options.frames = intIn(arg, value(), 1, 100000);
+      framesGiven = true;
+    } else if (arg == "--screenshot") {
+      options.screenshot = value();
+    } else if (arg == "--supersample") {
+      options.supersample = intIn(arg, value(), 1, 4);
+      if (options.supersample == 3) throw std::invalid_argument("--supersample must be 1, 2 or 4");
+    } else if (arg == "--transparent") {
+      options.transparent = true;
+    } else if (arg == "--no-ui") {
+      options.noUi = true;
+    } else if (arg == "--bench") {
+      options.benchFrames = intIn(arg, value(), 1, 100000);
+    } else if (arg == "--size") {
+      const std::string size = value();
+      char tail = 0;
+      if (std::sscanf(size.c_str(), "%dx%d%c", &options.width, &options.height, &tail) != 2 ||
+          options.width < 64 || options.height < 64 || options.width > 8192 ||
+          options.height > 8192)
+        throw std::invalid_argument("--size must be WxH between 64 and 8192 (got '" + size + "')");
+    } else if (arg == "--quit-after") {
+      options.quitAfter = positive(arg, value());
+    } else if (arg == "--help" || arg == "-h") {
+      std::cout << kUsage;
+      if (helpShown) *helpShown = true;
+      return options;
+    } else {
+      throw std::invalid_argument("unknown option '" + arg + "'");
+    }
+  }
+  if (options.benchFrames > 0) options.headless = true;
+  if (options.headless && options.screenshot.empty() && options.benchFrames == 0)
+    throw std::invalid_argument("--headless needs --screenshot OUT.png (or --bench N)");
+  if (!options.headless && (framesGiven || !options.screenshot.empty() || options.noUi))
+    throw std::invalid_argument("--frames, --screenshot and --no-ui need --headless");
+  return options;
+}
+
+}  // namespace sculpt::app

@@ -1,0 +1,38 @@
+#pragma once
+// The window's command line:
+//   sculpt [--scene FILE] [--level K] [--method M] [--field F] [--clip x|y|z] [--wireframe]
+//          [--show-cells] [--show-control] [--preset blender|stylus] [--ui-scale S]
+//          [--headless --screenshot OUT.png [--frames N] [--supersample 1|2|4] [--transparent]
+//           [--no-ui]] [--size WxH] [--quit-after SECONDS] [--bench N]
+
+#include <optional>
+#include <string>
+
+#include "sculpt/display_settings.h"
+
+namespace sculpt::app {
+
+struct Options {
+  std::string scene;  ///< control mesh (.json) or surface (.obj/.gltf/.glb); empty: the bunny
+  std::optional<int> level;  ///< simulation level K
+  DisplaySettings display;
+  bool stylusPreset = false;
+  float uiScale = 0.0f;  ///< 0: from the monitor's content scale
+  bool headless = false;
+  int frames = 60;
+  std::string screenshot;
+  int supersample = 1;
+  bool transparent = false;
+  bool noUi = false;  ///< headless: the 3D view alone, without panels
+  int width = 1280, height = 800;
+  double quitAfter = 0.0;  ///< window mode: close after this many seconds (smoke tests)
+  int benchFrames = 0;     ///< headless: time N frames (sculpt --bench) instead of a screenshot
+};
+
+extern const char* const kUsage;
+
+/// Parses argv; throws std::invalid_argument with a sentence for a bad option. Prints the usage
+/// and sets *helpShown for --help.
+Options parseOptions(int argc, char** argv, bool* helpShown);
+
+}  // namespace sculpt::app

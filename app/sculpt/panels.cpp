@@ -1,0 +1,291 @@
+#include "sculpt/panels.h"
+
+#include <algorithm>
+#include <cstdio>
+#include <string>
+
+#include "sculpt/colour_bar.h"
+
+namespace sculpt::app {
+namespace {
+
+constexpr ImGuiWindowFlags kPanelFlags = ImGuiWindowFlags_NoMove | ImGuiWindowFlags_NoResize |
+                                         ImGuiWindowFlags_NoCollapse |
+                                         ImGuiWindowFlags_NoSavedSettings |
+                                         ImGuiWindowFlags_NoBringToFrontOnFocus;
+
+constexpr double kCageMin = 3.0, kCageMax = 16.0, kPoissonMin = 0.0, kPoissonMax = 0.49;
+
+float scaled(float pixels) { return pixels * ImGui::GetFontSize() / 13.0f; }
+
+void menuBar(AppModel& m) {
+  if (!ImGui::BeginMainMenuBar()) return;
+  Requests& r = m.requests;
+  if (ImGui::BeginMenu("File")) {
+    if (ImGui::MenuItem("Load default scene (bunny)")) r.loadScene = "<default>";
+    if (ImGui::MenuItem("Screenshot", "F12")) r.screenshot = true;
+    if (ImGui::BeginMenu("Screenshot options")) {
+      ImGui::RadioButton("1x", &m.screenshot.supersample, 1);
+      ImGui::SameLine();
+      ImGui::RadioButton("2x", &m.screenshot.supersample, 2);
+      ImGui::SameLine();
+      ImGui::RadioButton("4x", &m.screenshot.supersample, 4);
+      ImGui::Checkbox("Transparent background", &m.screenshot.transparent);
+      ImGui::Checkbox("Include panels", &m.screenshot.includePanels);
+      ImGui::EndMenu();
+    }
+    ImGui::Separator();
+    if (ImGui::MenuItem("Quit", "Ctrl+Q")) r.quit = true;
+    ImGui::EndMenu();
+  }
+  if (ImGui::BeginMenu("View")) {
+    if (ImGui::MenuItem("Frame model", "F")) r.frameModel = true;
+    if (ImGui::MenuItem("Frame all", "Home")) r.frameAll = true;
+    if (ImGui::MenuItem("Front", "Numpad 1")) r.standardView = render::StandardView::Front;
+    if (ImGui::MenuItem("Right", "Numpad 3")) r.standardView = render::StandardView::Right;
+    if (ImGui::MenuItem("Top", "Numpad 7")) r.standardView = render::StandardView::Top;
+    if (ImGui::MenuItem("Perspective / orthographic", "Numpad 5")) r.toggleOrthographic = true;
+    ImGui::Separator();
+    ImGui::MenuItem("Panels", "Tab", &m.showPanels);
+    if (ImGui::BeginMenu("Navigation preset")) {
+      if (ImGui::MenuItem("Blender (middle mouse)", nullptr, m.preset == NavigationPreset::Blender))
+        m.preset = NavigationPreset::Blender;
+      if (ImGui::MenuItem("Stylus (drag on background)", nullptr,
+                          m.preset == NavigationPreset::Stylus))
+        m.preset = NavigationPreset::Stylus;
+      ImGui::EndMenu();
+    }
+    if (ImGui::SliderFloat("UI scale", &m.uiScale, 1.0f, 3.0f, "%.2f")) r.uiScaleChanged = true;
+    ImGui::EndMenu();
+  }
+  if (ImGui::BeginMenu("Simulation")) {
+    if (ImGui::MenuItem(m.status.playing ? "Pause" : "Play", "Space")) r.togglePlay = true;
+    if (ImGui::MenuItem("Step", ".")) r.stepOnce = true;
+    if (ImGui::MenuItem("Reset", "R")) r.reset = true;
+    ImGui::EndMenu();
+  }
+  if (ImGui::BeginMenu("Help")) {
+    if (ImGui::MenuItem("Keys and mouse", "F1")) m.showHelp = true;
+    ImGui::EndMenu();
+  }
+  ImGui::EndMainMenuBar();
+}
+
+void toolPanel(AppModel& m, ImVec2 pos, ImVec2 size) {
+  ImGui::SetNextWindowPos(pos);
+  ImGui::SetNextWindowSize(size);
+  ImGui::Begin("Tools", nullptr, kPanelFlags);
+  Requests& r = m.requests;
+  ImGui::TextDisabled("Navigate");
+  int preset = m.preset == NavigationPreset::Stylus ? 1 : 0;
+  ImGui::RadioButton("Blender mouse", &preset, 0);
+  ImGui::RadioButton("Stylus / pen", &preset, 1);
+  m.preset = preset == 1 ? NavigationPreset::Stylus : NavigationPreset::Blender;
+  ImGui::Separator();
+  ImGui::TextDisabled("View");
+  const float half = 0.5f * (ImGui::GetContentRegionAvail().x - ImGui::GetStyle().ItemSpacing.x);
+  if (ImGui::Button("Front", ImVec2(half, 0))) r.standardView = render::StandardView::Front;
+  ImGui::SameLine();
+  if (ImGui::Button("Right", ImVec2(half, 0))) r.standardView = render::StandardView::Right;
+  if (ImGui::Button("Top", ImVec2(half, 0))) r.standardView = render::StandardView::Top;
+  ImGui::SameLine();
+  if (ImGui::Button("Ortho", ImVec2(half, 0))) r.toggleOrthographic = true;
+  if (ImGui::Button("Frame model (F)", ImVec2(-1, 0))) r.frameModel = true;
+  ImGui::Separator();
+  if (ImGui::Button("Screenshot (F12)", ImVec2(-1, 0))) r.screenshot = true;
+  if (ImGui::Button("Keys and mouse (F1)", ImVec2(-1, 0))) m.showHelp = true;
+  ImGui::End();
+}
+
+bool logSlider(const char* label, double* value, double lo, double hi, const char* format) {
+  return ImGui::SliderScalar(label, ImGuiDataType_Double, value, &lo, &hi, format,
+                             ImGuiSliderFlags_Logarithmic | ImGuiSliderFlags_AlwaysClamp);
+}
+
+void scenePanel(AppModel& m) {
+  Requests& r = m.requests;
+  SceneSettings& s = m.settings;
+  if (ImGui::CollapsingHeader("Scene", ImGuiTreeNodeFlags_DefaultOpen)) {
+    ImGui::TextWrapped("%s", m.status.description.c_str());
+    ImGui::InputTextWithHint("##path", "file.json / .obj / .gltf / .glb", m.scenePathInput.data(),
+                             m.scenePathInput.size());
+    ImGui::SameLine();
+    if (ImGui::Button("Load") && m.scenePathInput[0] != 0)
+      r.loadScene = std::string(m.scenePathInput.data());
+    bool rebuild = false;
+    rebuild |= ImGui::SliderInt("Level K", &s.level, 1, 3, "%d", ImGuiSliderFlags_AlwaysClamp);
+    if (ImGui::IsItemHovered())
+      ImGui::SetTooltip("Simulation level: elements live on the level-K cells (x8 per level)");
+    if (m.sceneFile.empty() || m.sceneFile.find(".json") == std::string::npos)
+      rebuild |= ImGui::SliderScalar("Cage cells", ImGuiDataType_Double, &s.cageCellsAcross,
+                                     &kCageMin, &kCageMax, "%.0f across");
+    else
+      rebuild |= ImGui::SliderInt("Render level", &s.renderLevel, 1, 5);
+    if (rebuild && !ImGui::IsItemActive()) r.applySettings = true;
+    if (ImGui::IsItemDeactivatedAfterEdit()) r.applySettings = true;
+  }
+  if (ImGui::CollapsingHeader("Material", ImGuiTreeNodeFlags_DefaultOpen)) {
+    bool changed = false;
+    changed |= logSlider("Young's modulus", &s.material.youngs, 1e3, 1e9, "%.3g Pa");
+    changed |= ImGui::SliderScalar("Poisson ratio", ImGuiDataType_Double, &s.material.poisson,
+                                   &kPoissonMin, &kPoissonMax, "%.3f");
+    changed |= logSlider("Density", &s.material.density, 1.0, 1e5, "%.4g kg/m^3");
+    changed |= logSlider("Damping", &s.material.damping, 0.01, 1e5, "%.3g kg/(m^3 s)");
+    if (changed) r.applySettings = true;
+  }
+  if (ImGui::CollapsingHeader("Simulation", ImGuiTreeNodeFlags_DefaultOpen)) {
+    int integrator = s.integrator == Integrator::Implicit ? 0 : 1;
+    bool changed = ImGui::Combo("Integrator", &integrator, "Implicit (stable)\0Paper (CG, explicit)\0");
+    s.integrator = integrator == 0 ? Integrator::Implicit : Integrator::Paper;
+    double dtMs = s.timeStep * 1000.0;
+    if (logSlider("Time step", &dtMs, 0.1, 100.0, "%.2f ms")) {
+      s.timeStep = dtMs / 1000.0;
+      changed = true;
+    }
+    float gravity[3] = {static_cast<float>(s.gravity.x()), static_cast<float>(s.gravity.y()),
+                        static_cast<float>(s.gravity.z())};
+    if (ImGui::DragFloat3("Gravity", gravity, 0.05f, -100.0f, 100.0f, "%.2f")) {
+      s.gravity = Eigen::Vector3d(gravity[0], gravity[1], gravity[2]);
+      changed = true;
+    }
+    if (changed) r.applySettings = true;
+    if (ImGui::Button(m.status.playing ? "Pause" : "Play")) r.togglePlay = true;
+    ImGui::SameLine();
+    if (ImGui::Button("Step")) r.stepOnce = true;
+    ImGui::SameLine();
+    if (ImGui::Button("Reset")) r.reset = true;
+  }
+}
+
+void displayPanel(AppModel& m) {
+  DisplaySettings& d = m.display;
+  if (!ImGui::CollapsingHeader("Display", ImGuiTreeNodeFlags_DefaultOpen)) return;
+  int method = static_cast<int>(d.method);
+  if (ImGui::Combo("Deformation", &method, "Linear\0Vertex\0Phong\0Attribute\0"))
+    d.method = static_cast<InterpolationMethod>(method);
+  int field = static_cast<int>(d.field);
+  if (ImGui::Combo("Field", &field, "None\0Young's modulus\0Density\0Displacement\0Strain energy\0"))
+    d.field = static_cast<FieldKind>(field);
+  if (d.field != FieldKind::None) {
+    ImGui::Checkbox("Automatic range", &d.autoRange);
+    if (!d.autoRange) {
+      ImGui::InputFloat("Low", &d.rangeLow, 0, 0, "%.4g");
+      ImGui::InputFloat("High", &d.rangeHigh, 0, 0, "%.4g");
+    }
+  }
+  ImGui::Checkbox("Surface", &d.showSurface);
+  ImGui::SameLine();
+  ImGui::Checkbox("Flat", &d.flatShading);
+  ImGui::SameLine();
+  ImGui::Checkbox("Wireframe", &d.wireframe);
+  ImGui::Checkbox("Control mesh", &d.showControlMesh);
+  ImGui::SameLine();
+  ImGui::Checkbox("Cells by type", &d.showCells);
+  if (d.showCells) {
+    ImGui::TextColored(ImVec4(0.35f, 0.55f, 0.95f, 1), "tricubic");
+    ImGui::SameLine();
+    ImGui::TextColored(ImVec4(0.95f, 0.55f, 0.15f, 1), "trilinear");
+    ImGui::SameLine();
+    ImGui::TextColored(ImVec4(0.85f, 0.25f, 0.85f, 1), "pyramid");
+  }
+  ImGui::Checkbox("Grid", &d.showGrid);
+  ImGui::SameLine();
+  ImGui::Checkbox("Axes", &d.showAxes);
+  ImGui::Checkbox("Clipping plane", &d.clip);
+  if (d.clip) {
+    ImGui::RadioButton("x", &d.clipAxis, 0);
+    ImGui::SameLine();
+    ImGui::RadioButton("y", &d.clipAxis, 1);
+    ImGui::SameLine();
+    ImGui::RadioButton("z", &d.clipAxis, 2);
+    ImGui::SliderFloat("Position", &d.clipPosition, 0.0f, 1.0f, "%.2f");
+  }
+}
+
+void rightPanel(AppModel& m, ImVec2 pos, ImVec2 size) {
+  ImGui::SetNextWindowPos(pos);
+  ImGui::SetNextWindowSize(size);
+  ImGui::Begin("Properties", nullptr, kPanelFlags);
+  ImGui::PushItemWidth(-scaled(110));
+  scenePanel(m);
+  displayPanel(m);
+  ImGui::PopItemWidth();
+  ImGui::End();
+}
+
+void bottomStrip(AppModel& m, ImVec2 pos, ImVec2 size) {
+  ImGui::SetNextWindowPos(pos);
+  ImGui::SetNextWindowSize(size);
+  ImGui::Begin("Status", nullptr, kPanelFlags | ImGuiWindowFlags_NoTitleBar | ImGuiWindowFlags_NoScrollbar);
+  Requests& r = m.requests;
+  if (ImGui::Button(m.status.playing ? "Pause" : "Play", ImVec2(scaled(52), 0))) r.togglePlay = true;
+  ImGui::SameLine();
+  if (ImGui::Button("Step")) r.stepOnce = true;
+  ImGui::SameLine();
+  if (ImGui::Button("Reset")) r.reset = true;
+  ImGui::SameLine();
+  const Status& s = m.status;
+  ImGui::Text("t %.2f s | frame %.1f ms | sim %.1f ms/step (%.0f/s) | deform %.2f ms, upload %.0f KiB "
+              "| %zu tris | %u tricubic, %u trilinear, %u pyramid%s",
+              s.simulatedTime, s.frameMs, s.simulationMs, s.stepsPerSecond, s.deformationMs,
+              static_cast<double>(s.uploadBytes) / 1024.0, s.triangles, s.elementCounts[0],
+              s.elementCounts[1], s.elementCounts[2], s.physicsReady ? "" : " | preparing physics");
+  ImGui::End();
+}
+
+}  // namespace
+
+ViewRect drawPanels(AppModel& m) {
+  menuBar(m);
+  const ImGuiViewport* viewport = ImGui::GetMainViewport();
+  ImVec2 min = viewport->WorkPos;
+  ImVec2 max(viewport->WorkPos.x + viewport->WorkSize.x, viewport->WorkPos.y + viewport->WorkSize.y);
+  if (!m.showPanels) return {min, max};
+  const float left = std::min(scaled(170), 0.2f * viewport->WorkSize.x);
+  const float right = std::min(scaled(320), 0.35f * viewport->WorkSize.x);
+  const float bottom = ImGui::GetFrameHeightWithSpacing() + 2 * ImGui::GetStyle().WindowPadding.y;
+  toolPanel(m, min, ImVec2(left, max.y - min.y - bottom));
+  rightPanel(m, ImVec2(max.x - right, min.y), ImVec2(right, max.y - min.y - bottom));
+  bottomStrip(m, ImVec2(min.x, max.y - bottom), ImVec2(max.x - min.x, bottom));
+  return {ImVec2(min.x + left, min.y), ImVec2(max.x - right, max.y - bottom)};
+}
+
+void drawBuildProgress(AppModel& m, ViewRect view) {
+  const BuildStatus& build = m.status.build;
+  if (!build.running) return;
+  const ImVec2 size(scaled(320), 0);
+  ImGui::SetNextWindowPos(ImVec2(0.5f * (view.min.x + view.max.x), 0.5f * (view.min.y + view.max.y)),
+                          ImGuiCond_Always, ImVec2(0.5f, 0.5f));
+  ImGui::SetNextWindowSize(size);
+  ImGui::Begin("Preparing", nullptr,
+               ImGuiWindowFlags_NoDecoration | ImGuiWindowFlags_NoSavedSettings |
+                   ImGuiWindowFlags_AlwaysAutoResize);
+  ImGui::Text("%s", build.stage.empty() ? "Preparing..." : build.stage.c_str());
+  ImGui::ProgressBar(static_cast<float>(build.fraction), ImVec2(-1, 0));
+  if (ImGui::Button("Cancel", ImVec2(-1, 0))) m.requests.cancelBuild = true;
+  ImGui::End();
+}
+
+void drawToasts(AppModel& m, ViewRect view) {
+  const auto now = std::chrono::steady_clock::now();
+  std::erase_if(m.toasts, [&](const Toast& t) { return t.until < now; });
+  float y = view.min.y + scaled(10);
+  int index = 0;
+  for (const Toast& toast : m.toasts) {
+    ImGui::SetNextWindowPos(ImVec2(view.max.x - scaled(10), y), ImGuiCond_Always, ImVec2(1.0f, 0.0f));
+    ImGui::SetNextWindowBgAlpha(0.8f);
+    const std::string name = "##toast" + std::to_string(index++);
+    ImGui::Begin(name.c_str(), nullptr,
+                 ImGuiWindowFlags_NoDecoration | ImGuiWindowFlags_AlwaysAutoResize |
+                     ImGuiWindowFlags_NoSavedSettings | ImGuiWindowFlags_NoFocusOnAppearing |
+                     ImGuiWindowFlags_NoNav);
+    if (toast.error)
+      ImGui::TextColored(ImVec4(1.0f, 0.45f, 0.4f, 1.0f), "%s", toast.text.c_str());
+    else
+      ImGui::TextUnformatted(toast.text.c_str());
+    y += ImGui::GetWindowHeight() + scaled(6);
+    ImGui::End();
+  }
+}
+
+}  // namespace sculpt::app

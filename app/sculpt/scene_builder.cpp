@@ -1,0 +1,265 @@
+#include "sculpt/scene_builder.h"
+
+#include <cmath>
+#include <filesystem>
+#include <stdexcept>
+
+#include "embed/gradient_weights.h"
+#include "embed/recomputed_normals.h"
+#include "embed/surface_cage.h"
+#include "io/control_mesh_json.h"
+#include "io/surface_file.h"
+#include "io/vtk_writer.h"
+#include "mesh/boundary_surface.h"
+#include "mesh/surface_triangles.h"
+#include "mesh/validation.h"
+#include "sculpt/build_progress.h"
+#include "subdiv/catmull_clark_surface.h"
+#include "subdiv/loop_surface.h"
+#include "subdiv/mj_refiner.h"
+#include "subdiv/regularity.h"
+
+namespace sculpt::app {
+namespace {
+
+std::string fileName(const std::string& path) {
+  return std::filesystem::path(path).filename().string();
+}
+
+// The display surface and the control mesh of a source.
+struct SourceShape {
+  SurfaceMesh display;  // what is drawn (positions and faces)
+  CellComplex control;
+  double cellSize = 0.0;
+  std::string description;
+};
+
+SurfaceMesh readSurface(const std::string& path) {
+  if (!std::filesystem::exists(path))
+    throw std::runtime_error("cannot open " + path + ": the file does not exist");
+  return readSurfaceFile(path).surface();  // FileError names the file
+}
+
+Cage cageAround(const SurfaceMesh& surface, const SceneSettings& settings, const std::string& path) {
+  const Eigen::Vector3d extent =
+      (surface.positions.colwise().maxCoeff() - surface.positions.colwise().minCoeff()).transpose();
+  CageSettings cageSettings;
+  cageSettings.cellSize = extent.maxCoeff() / settings.cageCellsAcross;
+  try {
+    return buildSurfaceCage(surface, cageSettings);
+  } catch (const std::exception& e) {
+    throw std::runtime_error("cannot build a cage around " + fileName(path) + ": " + e.what());
+  }
+}
+
+// The boundary of a control mesh, Catmull–Clark refined with its sharp tags.
+SurfaceMesh controlMeshSurface(const CellComplex& control, const Topology& topology, int levels) {
+  const BoundarySurface boundary = boundarySurface(control, topology);
+  SurfaceTags tags;
+  tags.creases = boundary.creases;
+  tags.corners = boundary.corners;
+  return catmullClarkRefine(boundary.surface, levels, true, tags);
+}
+
+double meanEdgeLength(const CellComplex& complex, const Topology& topology) {
+  double sum = 0.0;
+  for (const auto& [a, b] : topology.edgeVertices)
+    sum += (complex.positions.row(a) - complex.positions.row(b)).norm();
+  return topology.numEdges() ? sum / topology.numEdges() : 1.0;
+}
+
+// The FEM's element per level-K cell, known before the elements are built so that the first
+// frame can colour the cells (fem_mesh.h decides the same way: regular hexahedra with a 4x4x4
+// block are tricubic, other hexahedra trilinear, other cells one pyramid per face; tricubic
+// elements are numbered first). Phase 2 checks it against the FemMesh.
+struct ElementPlan {
+  std::vector<uint8_t> kind;          // per level-K cell
+  std::vector<uint32_t> firstElement;  // per level-K cell
+  std::array<uint32_t, 3> counts{};
+};
+
+ElementPlan planElements(const Topology& topology) {
+  const std::vector<CellRegularity> regularity = classifyCells(topology);
+  ElementPlan plan;
+  plan.kind.resize(topology.numCells());
+  for (uint32_t c = 0; c < topology.numCells(); ++c) {
+    if (regularity[c] == CellRegularity::Regular && regularControlBlock(topology, c))
+      plan.kind[c] = kCellTricubic;
+    else if (vtkHexahedronOrder(topology, c))
+      plan.kind[c] = kCellTrilinear;
+    else
+      plan.kind[c] = kCellPyramid;
+  }
+  plan.firstElement.resize(topology.numCells());
+  uint32_t tricubic = 0, linear = 0;
+  for (uint32_t c = 0; c < topology.numCells(); ++c)
+    if (plan.kind[c] == kCellTricubic) plan.firstElement[c] = tricubic++;
+  for (uint32_t c = 0; c < topology.numCells(); ++c) {
+    if (plan.kind[c] == kCellTricubic) continue;
+    plan.firstElement[c] = tricubic + linear;
+    const uint32_t elements = plan.kind[c] == kCellTrilinear ? 1 : topology.cellFaces.rowSize(c);
+    linear += elements;
+    plan.counts[plan.kind[c]] += elements;
+  }
+  plan.counts[kCellTricubic] = tricubic;
+  return plan;
+}
+
+}  // namespace
+
+Material defaultSceneMaterial() {
+  Material material;
+  material.youngs = 3.0e6;
+  material.poisson = 0.3;
+  material.density = 1000.0;
+  material.damping = 1000.0;
+  return material;
+}
+
+bool SceneSettings::needsRebuild(const SceneSettings& other) const {
+  return level != other.level || cageCellsAcross != other.cageCellsAcross ||
+         renderLevel != other.renderLevel;
+}
+
+std::string sceneSettingsProblem(const SceneSettings& s) {
+  if (s.level < 1 || s.level > 3)
+    return "the simulation level must be 1, 2 or 3 (got " + std::to_string(s.level) + ")";
+  if (!(s.cageCellsAcross >= 1.0 && s.cageCellsAcross <= 64.0))
+    return "the cage must have 1 to 64 cells across (got " + std::to_string(s.cageCellsAcross) + ")";
+  if (s.renderLevel < 0 || s.renderLevel > 5)
+    return "the render level must be in 0..5 (got " + std::to_string(s.renderLevel) + ")";
+  if (const std::string problem = materialProblem(s.material); !problem.empty())
+    return "invalid material: " + problem;
+  if (!s.gravity.allFinite()) return "gravity must be finite";
+  SimulationSettings simulation;
+  simulation.integrator = s.integrator;
+  simulation.timeStep = s.timeStep;
+  return settingsProblem(simulation);
+}
+
+std::optional<SceneBuildPhase1> buildSceneGeometry(const SceneSource& source,
+                                                   const SceneSettings& settings, uint64_t sceneId,
+                                                   ProgressReporter* progress) {
+  if (const std::string problem = sceneSettingsProblem(settings); !problem.empty())
+    throw std::invalid_argument(problem);
+  auto geometry = std::make_shared<SceneGeometry>();
+  auto solid = std::make_shared<SceneSolid>();
+  geometry->sceneId = sceneId;
+  StageClock clock(geometry->stageMs);
+  // Fractions of the whole build (both phases) as measured on the default scene: phase 1 is
+  // under a tenth of it, the first implicit step (matrices and factorisation) most of the rest.
+  BuildStage read(progress, 0.0, 0.01, "reading");
+  if (!read.start()) return std::nullopt;
+
+  // Surface and control mesh
+  SourceShape shape;
+  if (source.kind == SceneKind::ControlMesh) {
+    CellComplex control;
+    try {
+      control = loadControlMeshJson(source.path);
+    } catch (const std::exception& e) {
+      throw std::runtime_error(std::string("cannot load the control mesh ") + e.what());
+    }
+    const std::vector<ValidationIssue> issues = validate(control);
+    for (const ValidationIssue& issue : issues)
+      if (issue.severity == ValidationIssue::Severity::Error)
+        throw std::runtime_error(fileName(source.path) + " is not a valid control mesh: " +
+                                 issue.message);
+    clock.lap("read");
+    BuildStage refine(progress, 0.01, 0.04, "refining the surface");
+    if (!refine.start()) return std::nullopt;
+    const Topology topology = buildTopology(control);
+    shape.display = controlMeshSurface(control, topology, settings.renderLevel);
+    shape.cellSize = meanEdgeLength(control, topology);
+    shape.control = std::move(control);
+    shape.description = fileName(source.path) + ", surface at Catmull-Clark level " +
+                        std::to_string(settings.renderLevel);
+    clock.lap("refine");
+  } else {
+    const bool bunny = source.kind == SceneKind::DefaultBunny;
+    const std::string path =
+        bunny && source.path.empty() ? std::string(SCULPT_SOURCE_DIR) + "/assets/bunny.obj"
+                                     : source.path;
+    const SurfaceMesh surface = readSurface(path);
+    clock.lap("read");
+    BuildStage refine(progress, 0.01, 0.04, "refining the surface");
+    if (!refine.start()) return std::nullopt;
+    // The bunny is drawn Loop-refined twice onto its limit surface; the cage is built around
+    // the coarse surface (the margin covers the difference).
+    shape.display = bunny ? loopRefine(surface, 2, true) : surface;
+    clock.lap("refine");
+    BuildStage cage(progress, 0.04, 0.05, "building the cage");
+    if (!cage.start()) return std::nullopt;
+    Cage built = cageAround(surface, settings, path);
+    shape.cellSize = built.cellSize;
+    shape.control = std::move(built.control);
+    shape.description = fileName(path) + " in a " + std::to_string(built.gridSize[0]) + "x" +
+                        std::to_string(built.gridSize[1]) + "x" + std::to_string(built.gridSize[2]) +
+                        " cage of " + std::to_string(shape.control.numCells()) + " cells";
+    clock.lap("cage");
+  }
+  geometry->restPositions = shape.display.positions;
+  geometry->restNormals = vertexNormals(shape.display);
+  geometry->triangles = triangulate(shape.display);
+  if (geometry->triangles.empty())
+    throw std::runtime_error("the surface of the scene has no faces to draw");
+  clock.lap("normals");
+
+  // The solid at level K and its cells
+  BuildStage refineSolid(progress, 0.05, 0.06, "subdividing the solid");
+  if (!refineSolid.start()) return std::nullopt;
+  std::optional<Subdivision> subdivision =
+      subdivide(shape.control, settings.level, refineSolid.reporter());
+  if (!subdivision) return std::nullopt;
+  clock.lap("subdivide");
+  BuildStage cells(progress, 0.06, 0.07, "cells");
+  if (!cells.start()) return std::nullopt;
+  solid->centres = solidCellMesh(subdivision->finest(), subdivision->finestTopology());
+  geometry->cellMesh = std::move(solid->centres.mesh);
+  solid->centres.mesh = VolumeMesh{};
+  const ElementPlan plan = planElements(subdivision->finestTopology());
+  geometry->elementCounts = plan.counts;
+  for (uint32_t c = 0; c < subdivision->finest().numCells(); ++c) {
+    if (plan.kind[c] != kCellPyramid) {  // one hexahedron
+      geometry->cellKind.push_back(plan.kind[c]);
+      geometry->cellElement.push_back(plan.firstElement[c]);
+      continue;
+    }
+    // solidCellMesh: per face j, a fan of (corners - 2) tetrahedra on pyramid element first + j.
+    for (uint32_t j = 0; j < subdivision->finest().numFacesOfCell(c); ++j)
+      for (size_t t = 2; t < subdivision->finest().cellFace(c, j).size(); ++t) {
+        geometry->cellKind.push_back(kCellPyramid);
+        geometry->cellElement.push_back(plan.firstElement[c] + j);
+      }
+  }
+  if (geometry->cellKind.size() != geometry->cellMesh.numCells())
+    throw std::logic_error("the element plan does not match the level-K cells");
+  clock.lap("cells");
+
+  // Embedding and the node-gradient stencil
+  BuildStage embed(progress, 0.07, 0.08, "embedding the surface");
+  if (!embed.start()) return std::nullopt;
+  geometry->embedding = embedPoints(geometry->cellMesh, geometry->restPositions, embed.reporter());
+  if (embed.cancelled()) return std::nullopt;
+  clock.lap("embed");
+  BuildStage stencil(progress, 0.08, 0.09, "gradient stencil");
+  if (!stencil.start()) return std::nullopt;
+  solid->stencil = nodeGradientStencil(geometry->cellMesh, cellGradientOperator(geometry->cellMesh),
+                                       cellToNodeWeights(geometry->cellMesh));
+  clock.lap("stencil");
+
+  // The control mesh for display, with the top layer pinned
+  const Topology& controlTopology = subdivision->topologies.front();
+  geometry->restControl = shape.control.positions;
+  geometry->controlEdges = controlTopology.edgeVertices;
+  const double top = shape.control.positions.col(1).maxCoeff();
+  geometry->pinned.resize(shape.control.numVertices());
+  for (uint32_t v = 0; v < shape.control.numVertices(); ++v)
+    geometry->pinned[v] = shape.control.positions(v, 1) >= top - 0.5 * shape.cellSize;
+  solid->control = std::move(shape.control);
+  solid->cellSize = shape.cellSize;
+  geometry->description = shape.description + ", level " + std::to_string(settings.level);
+  return SceneBuildPhase1{std::move(geometry), std::move(solid)};
+}
+
+}  // namespace sculpt::app

@@ -1,0 +1,370 @@
+#include "sculpt/scene_controller.h"
+
+#include <chrono>
+#include <stdexcept>
+#include <utility>
+
+namespace sculpt::app {
+
+SceneController::SceneController(bool threaded) : threaded_(threaded) {
+  if (!threaded_) return;
+  builder_ = std::thread([this] { builderLoop(); });
+  simulation_ = std::thread([this] { simulationLoop(); });
+}
+
+SceneController::~SceneController() {
+  {
+    const std::lock_guard lock(mutex_);
+    stop_.store(true);
+    if (runningJob_) runningJob_->cancel->store(true);
+    pendingJob_.reset();
+  }
+  builderWake_.notify_all();
+  simulationWake_.notify_all();
+  if (builder_.joinable()) builder_.join();
+  if (simulation_.joinable()) simulation_.join();
+}
+
+// ---------------------------------------------------------------------------------------------
+// Commands from the caller
+
+void SceneController::load(const SceneSource& source, const SceneSettings& settings) {
+  if (const std::string problem = sceneSettingsProblem(settings); !problem.empty())
+    throw std::invalid_argument(problem);
+  {
+    const std::lock_guard lock(mutex_);
+    if (runningJob_) runningJob_->cancel->store(true);
+    Job job;
+    job.id = ++latestJob_;
+    job.source = source;
+    job.settings = settings;
+    job.cancel = std::make_shared<std::atomic<bool>>(false);
+    pendingJob_ = std::move(job);
+    status_.running = true;
+    status_.fraction = 0.0;
+    status_.stage = "queued";
+    status_.error.clear();
+    live_ = settings;
+    ++liveVersion_;
+  }
+  builderWake_.notify_one();
+  simulationWake_.notify_one();
+}
+
+BuildStatus SceneController::buildStatus() const {
+  const std::lock_guard lock(mutex_);
+  return status_;
+}
+
+void SceneController::cancelBuild() {
+  const std::lock_guard lock(mutex_);
+  if (runningJob_) runningJob_->cancel->store(true);
+  pendingJob_.reset();
+  ++latestJob_;  // whatever is still winding down no longer owns the status
+  status_.running = false;
+  status_.fraction = 0.0;
+  status_.stage.clear();
+  status_.error.clear();
+}
+
+void SceneController::setProgressObserver(ProgressCallback observer) {
+  const std::lock_guard lock(mutex_);
+  observer_ = std::move(observer);
+}
+
+std::shared_ptr<const SceneGeometry> SceneController::takeNewGeometry() {
+  const std::lock_guard lock(mutex_);
+  return std::exchange(newGeometry_, nullptr);
+}
+
+bool SceneController::fetchNewer(SceneFrame& frame) {
+  const std::lock_guard lock(mutex_);
+  if (published_.version <= frame.version) return false;
+  frame = published_;
+  return true;
+}
+
+void SceneController::setPlaying(bool playing) {
+  {
+    const std::lock_guard lock(mutex_);
+    playing_ = playing;
+  }
+  simulationWake_.notify_one();
+}
+
+bool SceneController::playing() const {
+  const std::lock_guard lock(mutex_);
+  return playing_;
+}
+
+void SceneController::stepOnce() {
+  {
+    const std::lock_guard lock(mutex_);
+    ++stepRequests_;
+  }
+  simulationWake_.notify_one();
+}
+
+void SceneController::reset() {
+  {
+    const std::lock_guard lock(mutex_);
+    resetRequested_ = true;
+  }
+  simulationWake_.notify_one();
+}
+
+const SceneController::Job* SceneController::jobInFlightLocked() const {
+  if (pendingJob_) return &*pendingJob_;
+  if (runningJob_ && !runningJob_->cancel->load()) return &*runningJob_;
+  return nullptr;
+}
+
+SceneSettings SceneController::settings() const {
+  const std::lock_guard lock(mutex_);
+  SceneSettings settings = live_;
+  const SceneSettings& built = jobInFlightLocked() ? jobInFlightLocked()->settings
+                               : currentScene_     ? currentSettings_
+                                                   : live_;
+  settings.level = built.level;
+  settings.cageCellsAcross = built.cageCellsAcross;
+  settings.renderLevel = built.renderLevel;
+  return settings;
+}
+
+SceneSource SceneController::source() const {
+  const std::lock_guard lock(mutex_);
+  if (const Job* job = jobInFlightLocked()) return job->source;
+  return currentSource_;
+}
+
+void SceneController::applySettings(const SceneSettings& settings) {
+  if (const std::string problem = sceneSettingsProblem(settings); !problem.empty())
+    throw std::invalid_argument(problem);
+  if (settings.needsRebuild(this->settings())) {
+    load(source(), settings);
+    return;
+  }
+  {
+    const std::lock_guard lock(mutex_);
+    live_ = settings;
+    ++liveVersion_;
+  }
+  simulationWake_.notify_one();
+}
+
+void SceneController::advance() {
+  if (threaded_) return;
+  for (;;) {
+    Job job;
+    {
+      const std::lock_guard lock(mutex_);
+      if (!pendingJob_) break;
+      job = std::move(*pendingJob_);
+      pendingJob_.reset();
+      runningJob_ = job;
+    }
+    runJob(job);
+    const std::lock_guard lock(mutex_);
+    runningJob_.reset();
+  }
+  simulationIteration();
+}
+
+// ---------------------------------------------------------------------------------------------
+// Builds
+
+void SceneController::publishLocked(SceneFrame& frame) {
+  frame.version = ++version_;
+  std::swap(published_, frame);
+}
+
+void SceneController::finishJob(const Job& job, const std::string& error, const StageTimes* times) {
+  // mutex_ held by the caller
+  if (job.id != latestJob_) return;  // a newer load or a cancel owns the status
+  status_.running = false;
+  status_.fraction = error.empty() ? 1.0 : 0.0;
+  status_.stage = error.empty() ? "ready" : "failed";
+  status_.error = error;
+  if (times) status_.stageMs = *times;
+}
+
+void SceneController::runJob(const Job& job) {
+  ProgressCallback observer;
+  {
+    const std::lock_guard lock(mutex_);
+    observer = observer_;
+  }
+  ProgressReporter progress([&](double fraction, std::string_view stage) {
+    if (job.cancel->load() || stop_.load()) return false;
+    {
+      const std::lock_guard lock(mutex_);
+      if (job.id == latestJob_) {
+        status_.fraction = fraction;
+        status_.stage = stage;
+      }
+    }
+    if (observer && !observer(fraction, stage)) job.cancel->store(true);
+    return !job.cancel->load() && !stop_.load();
+  });
+  auto cancelled = [&] { return job.cancel->load() || stop_.load(); };
+  // A cancelled build (cancelBuild, a newer load, the observer, destruction) ends quietly.
+  auto abandon = [&] {
+    const std::lock_guard lock(mutex_);
+    if (job.id != latestJob_) return;
+    status_.running = false;
+    status_.fraction = 0.0;
+    status_.stage.clear();
+    status_.error.clear();
+  };
+  try {
+    // Phase 1: display
+    std::optional<SceneBuildPhase1> phase1 =
+        buildSceneGeometry(job.source, job.settings, job.id, &progress);
+    if (!phase1 || cancelled()) return abandon();
+    bool early = false;
+    {
+      std::unique_lock lock(mutex_);
+      if (cancelled()) {
+        lock.unlock();
+        return abandon();
+      }
+      early = !simulationExists_;
+      if (early) {  // nothing runs: show the rest shape now
+        newGeometry_ = phase1->geometry;
+        currentScene_ = job.id;
+        currentSource_ = job.source;
+        currentSettings_ = job.settings;
+        SceneFrame rest = restFrame(*phase1->geometry, job.settings.material);
+        publishLocked(rest);
+      }
+    }
+
+    // Phase 2: physics
+    StageTimes times = phase1->geometry->stageMs;
+    std::unique_ptr<ScenePhysics> physics =
+        ScenePhysics::build(phase1->geometry, phase1->solid, job.settings, &progress, &times);
+    if (!physics || cancelled()) return abandon();
+    SceneFrame frame;
+    physics->fillFrame(frame);
+    std::unique_ptr<ScenePhysics> replaced;
+    {
+      std::unique_lock lock(mutex_);
+      if (cancelled()) {
+        lock.unlock();
+        return abandon();
+      }
+      if (!early) newGeometry_ = phase1->geometry;
+      currentScene_ = job.id;
+      currentSource_ = job.source;
+      currentSettings_ = job.settings;
+      publishLocked(frame);
+      replaced = std::exchange(readyPhysics_, std::move(physics));
+      simulationExists_ = true;
+      finishJob(job, {}, &times);
+    }
+    simulationWake_.notify_one();
+  } catch (const std::exception& e) {
+    const std::lock_guard lock(mutex_);
+    finishJob(job, e.what(), nullptr);
+  }
+}
+
+void SceneController::builderLoop() {
+  for (;;) {
+    Job job;
+    {
+      std::unique_lock lock(mutex_);
+      builderWake_.wait(lock, [this] { return stop_.load() || pendingJob_.has_value(); });
+      if (stop_.load()) return;
+      job = std::move(*pendingJob_);
+      pendingJob_.reset();
+      runningJob_ = job;
+    }
+    runJob(job);
+    const std::lock_guard lock(mutex_);
+    runningJob_.reset();
+  }
+}
+
+// ---------------------------------------------------------------------------------------------
+// Simulation
+
+bool SceneController::simulationIteration() {
+  std::unique_ptr<ScenePhysics> retired;
+  bool doReset = false, doStep = false, liveChanged = false;
+  SceneSettings live;
+  {
+    const std::lock_guard lock(mutex_);
+    if (readyPhysics_) {
+      retired = std::exchange(physics_, std::move(readyPhysics_));
+      appliedLiveVersion_ = 0;  // settings changed during the build apply to it too
+    }
+    if (!physics_) return false;
+    doReset = std::exchange(resetRequested_, false);
+    if (liveVersion_ != appliedLiveVersion_) {
+      live = live_;
+      appliedLiveVersion_ = liveVersion_;
+      liveChanged = true;
+    }
+    doStep = playing_ || stepRequests_ > 0;
+    if (stepRequests_ > 0) --stepRequests_;
+  }
+  retired.reset();  // a replaced scene is freed outside the lock
+  std::string problem;
+  try {
+    if (liveChanged) problem = physics_->applyLive(live);
+    if (doReset) physics_->reset();
+    if (doStep) physics_->step();
+  } catch (const std::exception& e) {  // nothing the simulator is known to throw; stop calmly
+    const std::lock_guard lock(mutex_);
+    status_.error = std::string("the simulation stopped: ") + e.what();
+    playing_ = false;
+    stepRequests_ = 0;
+    return false;
+  }
+  if (!doStep && !doReset && !liveChanged) return false;
+  physics_->fillFrame(back_);
+  const std::lock_guard lock(mutex_);
+  if (!problem.empty()) status_.error = problem;
+  if (physics_->geometry().sceneId != currentScene_) return false;  // being replaced
+  publishLocked(back_);
+  return true;
+}
+
+void SceneController::simulationLoop() {
+  using Clock = std::chrono::steady_clock;
+  constexpr auto kStep = std::chrono::microseconds(16667);  // real time at 60 steps per second
+  auto next = Clock::now();
+  for (;;) {
+    {
+      // Sleep until there is something to do.
+      std::unique_lock lock(mutex_);
+      simulationWake_.wait(lock, [this] {
+        return stop_.load() || readyPhysics_ ||
+               (physics_ && (playing_ || stepRequests_ > 0 || resetRequested_ ||
+                             liveVersion_ != appliedLiveVersion_));
+      });
+      if (stop_.load()) return;
+    }
+    const bool wasPlaying = playing();
+    simulationIteration();
+    if (!wasPlaying) {
+      next = Clock::now();
+      continue;
+    }
+    // Pace at 60 steps per second; slower than real time runs as fast as it can.
+    next += kStep;
+    const auto now = Clock::now();
+    if (next <= now) {
+      next = now;
+      continue;
+    }
+    std::unique_lock lock(mutex_);
+    simulationWake_.wait_until(lock, next, [this] {
+      return stop_.load() || readyPhysics_ || stepRequests_ > 0 || resetRequested_ ||
+             liveVersion_ != appliedLiveVersion_;
+    });
+  }
+}
+
+}  // namespace sculpt::app

@@ -1,0 +1,211 @@
+#include "sculpt/scene_physics.h"
+
+#include <chrono>
+#include <cmath>
+#include <limits>
+#include <stdexcept>
+
+#include "sculpt/build_progress.h"
+#include "sim/standard_forms.h"
+
+namespace sculpt::app {
+namespace {
+
+bool sameMaterial(const Material& a, const Material& b) {
+  return a.youngs == b.youngs && a.poisson == b.poisson && a.density == b.density &&
+         a.damping == b.damping;
+}
+
+// Per cellMesh cell, the value of its element.
+void toCells(const SceneGeometry& geometry, const std::vector<double>& perElement,
+             std::vector<float>& perCell) {
+  perCell.resize(geometry.cellElement.size());
+  for (size_t c = 0; c < perCell.size(); ++c)
+    perCell[c] = static_cast<float>(perElement[geometry.cellElement[c]]);
+}
+
+}  // namespace
+
+SceneFrame restFrame(const SceneGeometry& geometry, const Material& material) {
+  SceneFrame frame;
+  frame.sceneId = geometry.sceneId;
+  frame.nodes = geometry.cellMesh.positions;
+  frame.gradients.assign(geometry.cellMesh.numNodes(), Eigen::Matrix3d::Identity());
+  frame.control = geometry.restControl;
+  const size_t cells = geometry.cellMesh.numCells();
+  frame.cellYoungs.assign(cells, static_cast<float>(material.youngs));
+  frame.cellDensity.assign(cells, static_cast<float>(material.density));
+  frame.cellStrainEnergy.assign(cells, 0.0f);
+  return frame;
+}
+
+ScenePhysics::~ScenePhysics() = default;
+
+std::unique_ptr<ScenePhysics> ScenePhysics::build(std::shared_ptr<const SceneGeometry> geometry,
+                                                  std::shared_ptr<const SceneSolid> solid,
+                                                  const SceneSettings& settings,
+                                                  ProgressReporter* progress, StageTimes* stageMs) {
+  StageTimes times;
+  StageClock clock(times);
+  std::unique_ptr<ScenePhysics> physics(new ScenePhysics);
+  physics->geometry_ = std::move(geometry);
+  physics->solid_ = std::move(solid);
+  const SceneGeometry& g = *physics->geometry_;
+
+  // Elements
+  BuildStage elements(progress, 0.09, 0.2, "building the elements");
+  if (!elements.start()) return nullptr;
+  FemSetup setup;
+  setup.level = settings.level;
+  setup.material = settings.material;
+  std::string error;
+  std::optional<FemModel> model =
+      FemModel::create(physics->solid_->control, setup, &error, elements.reporter());
+  if (!model) {
+    if (error.empty()) return nullptr;  // cancelled
+    throw std::runtime_error("cannot simulate " + g.description + ": " + error);
+  }
+  physics->model_ = std::make_unique<FemModel>(std::move(*model));
+  const FemMesh& mesh = physics->model_->mesh();
+  // The element plan of phase 1 must be the FEM's.
+  const ElementCounts counts = mesh.counts();
+  bool planMatches = counts.tricubic == g.elementCounts[0] && counts.trilinear == g.elementCounts[1] &&
+                     counts.pyramid == g.elementCounts[2];
+  for (size_t c = 0; planMatches && c < g.cellElement.size(); ++c)
+    planMatches = g.cellElement[c] < mesh.numElements() &&
+                  static_cast<uint8_t>(mesh.elementType[g.cellElement[c]]) == g.cellKind[c];
+  if (!planMatches)
+    throw std::logic_error("the element kinds drawn do not match the FEM elements of " +
+                           g.description);
+  physics->elementVolume_.assign(mesh.numElements(), 0.0);
+  for (uint32_t e = 0; e < mesh.numElements(); ++e)
+    for (uint32_t q = mesh.gaussBegin(e); q < mesh.gaussBegin(e) + mesh.gaussCount(e); ++q)
+      physics->elementVolume_[e] += mesh.gaussVolume[q];
+  clock.lap("elements");
+
+  // Simulator: pins, gravity, settings
+  BuildStage simulator(progress, 0.2, 0.21, "preparing the simulator");
+  if (!simulator.start()) return nullptr;
+  SimulationSettings simulation;
+  simulation.integrator = settings.integrator;
+  simulation.timeStep = settings.timeStep;
+  physics->simulator_ = std::make_unique<Simulator>(*physics->model_, simulation);
+  for (uint32_t v = 0; v < g.pinned.size(); ++v)
+    if (g.pinned[v]) physics->simulator_->setFixed(v, true);
+  physics->setGravity(settings.gravity);
+  physics->applied_ = settings;
+  physics->updateMaterialFields();
+  clock.lap("simulator");
+
+  // The first step (the implicit integrator factorises its preconditioner here)
+  BuildStage first(progress, 0.21, 1.0, "first step");
+  if (!first.start()) return nullptr;
+  physics->step();
+  clock.lap("first step");
+  if (stageMs) stageMs->insert(stageMs->end(), times.begin(), times.end());
+  return physics;
+}
+
+void ScenePhysics::setGravity(const Eigen::Vector3d& gravity) {
+  if (gravityLoad_) simulator_->removeLoad(gravityLoad_);
+  gravityLoad_ = nullptr;
+  if (gravity.squaredNorm() > 0.0)
+    gravityLoad_ = simulator_->addLoad(std::make_unique<GravityForm>(*model_, gravity));
+}
+
+double ScenePhysics::simulatedTime() const { return simulator_->time() - timeOrigin_; }
+
+StepReport ScenePhysics::step() {
+  const auto start = std::chrono::steady_clock::now();
+  lastStep_ = simulator_->step();
+  updateState();
+  lastStepMs_ =
+      std::chrono::duration<double, std::milli>(std::chrono::steady_clock::now() - start).count();
+  return lastStep_;
+}
+
+void ScenePhysics::reset() {
+  const Points zero = Points::Zero(model_->numControlPoints(), 3);
+  simulator_->setState(model_->restControl(), zero);
+  timeOrigin_ = simulator_->time();
+  lastStep_ = StepReport{};
+  updateState();
+}
+
+std::string ScenePhysics::applyLive(const SceneSettings& settings) {
+  if (std::string problem = sceneSettingsProblem(settings); !problem.empty()) return problem;
+  bool changed = false;
+  if (settings.integrator != applied_.integrator || settings.timeStep != applied_.timeStep) {
+    SimulationSettings simulation = simulator_->settings();
+    simulation.integrator = settings.integrator;
+    simulation.timeStep = settings.timeStep;
+    if (std::string problem = simulator_->setSettings(simulation); !problem.empty()) return problem;
+    changed = true;
+  }
+  if (!sameMaterial(settings.material, applied_.material)) {
+    std::string problem;
+    if (model_->paintMaterial(Eigen::Vector3d::Zero(), std::numeric_limits<double>::infinity(),
+                              settings.material, &problem) < 0)
+      return problem;
+    updateMaterialFields();
+    changed = true;
+  }
+  if (settings.gravity != applied_.gravity) {
+    setGravity(settings.gravity);
+    changed = true;
+  }
+  applied_ = settings;
+  if (changed) updateState();
+  return {};
+}
+
+void ScenePhysics::updateMaterialFields() {
+  // Volume-weighted means over each element's Gauss points.
+  const FemMesh& mesh = model_->mesh();
+  elementYoungs_.assign(mesh.numElements(), 0.0);
+  elementDensity_.assign(mesh.numElements(), 0.0);
+  for (uint32_t e = 0; e < mesh.numElements(); ++e) {
+    double youngs = 0.0, density = 0.0;
+    for (uint32_t q = mesh.gaussBegin(e); q < mesh.gaussBegin(e) + mesh.gaussCount(e); ++q) {
+      youngs += mesh.gaussVolume[q] * mesh.gaussMaterial[q].youngs;
+      density += mesh.gaussVolume[q] * mesh.gaussMaterial[q].density;
+    }
+    elementYoungs_[e] = youngs / elementVolume_[e];
+    elementDensity_[e] = density / elementVolume_[e];
+  }
+}
+
+void ScenePhysics::updateState() {
+  const SceneGeometry& g = *geometry_;
+  // Node displacements A (p - p_rest): the rest state gives the rest nodes exactly.
+  Points displacement;
+  model_->nodesFromControl(simulator_->positions() - model_->restControl(), displacement);
+  femNodes_ = model_->mesh().restNodes + displacement;
+  const uint32_t vertices = solid_->centres.numVertices;
+  nodes_ = g.cellMesh.positions + solid_->centres.nodePositions(displacement.topRows(vertices));
+  applyNodeGradientStencil(solid_->stencil, nodes_, gradients_);
+  // Strain energy density with the rotations of this state (as Simulator::elasticEnergy).
+  ElasticKernel& elastic = model_->elastic();
+  elastic.updateRotations(femNodes_);
+  elastic.elementEnergies(femNodes_, elementEnergy_);
+  elementEnergyDensity_.resize(elementEnergy_.size());
+  for (size_t e = 0; e < elementEnergy_.size(); ++e)
+    elementEnergyDensity_[e] = elementEnergy_[e] / elementVolume_[e];
+}
+
+void ScenePhysics::fillFrame(SceneFrame& frame) const {
+  const SceneGeometry& g = *geometry_;
+  frame.sceneId = g.sceneId;
+  frame.nodes = nodes_;
+  frame.gradients = gradients_;
+  frame.control = simulator_->positions();
+  toCells(g, elementYoungs_, frame.cellYoungs);
+  toCells(g, elementDensity_, frame.cellDensity);
+  toCells(g, elementEnergyDensity_, frame.cellStrainEnergy);
+  frame.simulatedTime = simulatedTime();
+  frame.stepMs = lastStepMs_;
+  frame.lastStep = lastStep_;
+  frame.physicsReady = true;
+}
+
+}  // namespace sculpt::app

@@ -1,0 +1,99 @@
+#pragma once
+// Phase 2 of a scene build ("physics") and the running simulation: the FEM model of the solid
+// at level K, the simulator with the top layer pinned and gravity, and after every step the
+// state the window draws (SceneFrame): level-K node positions and node gradients for the GPU
+// Phong deformer, the control points, and per-cell fields.
+//
+// Frame node positions are the rest nodes plus the node displacements A (p - p_rest), so the rest
+// state gives the rest nodes of SceneGeometry exactly.
+
+#include <cstdint>
+#include <memory>
+#include <string>
+#include <vector>
+
+#include <Eigen/Core>
+
+#include "sculpt/scene_builder.h"
+#include "sim/fem_model.h"
+#include "sim/simulator.h"
+
+namespace sculpt::app {
+
+/// A simulation state for the window, O(nodes + cells).
+struct SceneFrame {
+  uint64_t version = 0;  ///< increases with every frame the controller publishes
+  uint64_t sceneId = 0;  ///< the SceneGeometry it belongs to
+  Points nodes;          ///< #cellMesh nodes by 3
+  std::vector<Eigen::Matrix3d> gradients;  ///< per cellMesh node (PhongGpuDeformer::setFrame)
+  Points control;        ///< #control points by 3
+  /// Per cellMesh cell, from its FEM element: mean Young's modulus (Pa), mean density (kg/m^3)
+  /// and strain energy density (J/m^3) in this state.
+  std::vector<float> cellYoungs, cellDensity, cellStrainEnergy;
+  double simulatedTime = 0.0;  ///< seconds since the last reset
+  double stepMs = 0.0;         ///< wall time of the last step with this frame's update
+  StepReport lastStep;
+  bool physicsReady = false;   ///< false: the rest shape while phase 2 runs
+};
+
+/// The rest frame of a geometry before its physics exists: rest nodes, identity gradients, rest
+/// control points, the uniform `material`'s fields and no strain energy.
+SceneFrame restFrame(const SceneGeometry& geometry, const Material& material);
+
+class ScenePhysics {
+ public:
+  /// Phase 2: the elements, the simulator (top layer pinned, gravity, settings) and one first
+  /// step (which factorises the implicit solver's preconditioner). Stage times are appended to
+  /// `stageMs`. Returns null when cancelled through `progress`; throws std::runtime_error with a
+  /// sentence when the solid cannot be simulated (an inverted element, say).
+  static std::unique_ptr<ScenePhysics> build(std::shared_ptr<const SceneGeometry> geometry,
+                                             std::shared_ptr<const SceneSolid> solid,
+                                             const SceneSettings& settings,
+                                             ProgressReporter* progress, StageTimes* stageMs);
+  ~ScenePhysics();
+  ScenePhysics(const ScenePhysics&) = delete;
+  ScenePhysics& operator=(const ScenePhysics&) = delete;
+
+  const SceneGeometry& geometry() const { return *geometry_; }
+  const std::shared_ptr<const SceneGeometry>& sharedGeometry() const { return geometry_; }
+  FemModel& model() { return *model_; }
+  Simulator& simulator() { return *simulator_; }
+
+  /// Advances by one time step and updates the state.
+  StepReport step();
+  /// Back to rest: rest positions, zero velocity, simulated time 0.
+  void reset();
+  /// Applies what can change live (material, integrator, time step, gravity). Returns a sentence
+  /// when a setting is invalid (nothing is changed then).
+  std::string applyLive(const SceneSettings& settings);
+  /// Fills `frame` with the current state (all but version).
+  void fillFrame(SceneFrame& frame) const;
+
+  /// Per FEM element: strain energy density (J/m^3) in the current state and rest volume (m^3).
+  const std::vector<double>& elementStrainEnergyDensity() const { return elementEnergyDensity_; }
+  const std::vector<double>& elementVolume() const { return elementVolume_; }
+  double simulatedTime() const;
+
+ private:
+  ScenePhysics() = default;
+  void setGravity(const Eigen::Vector3d& gravity);
+  void updateState();          // nodes, gradients, strain energy from the simulator's state
+  void updateMaterialFields();  // per-element mean E and density
+
+  std::shared_ptr<const SceneGeometry> geometry_;
+  std::shared_ptr<const SceneSolid> solid_;
+  std::unique_ptr<FemModel> model_;
+  std::unique_ptr<Simulator> simulator_;
+  Form* gravityLoad_ = nullptr;
+  SceneSettings applied_;  // the live settings in force
+  double timeOrigin_ = 0.0;
+  StepReport lastStep_;
+  double lastStepMs_ = 0.0;
+
+  Points femNodes_, nodes_;
+  std::vector<Eigen::Matrix3d> gradients_;
+  std::vector<double> elementVolume_, elementEnergy_, elementEnergyDensity_;
+  std::vector<double> elementYoungs_, elementDensity_;
+};
+
+}  // namespace sculpt::app

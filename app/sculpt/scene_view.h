@@ -1,0 +1,77 @@
+#pragma once
+// The GPU side of a scene: the embedded surface (Phong-deformed in the vertex shader), the
+// control mesh, the level-K cells coloured by element type, the clipping-plane slice with its
+// field, the ground grid and the axes. Fed by SceneController: setGeometry() once per build,
+// setFrame() with each new simulation state (O(nodes) upload; O(cells) when a cell field shows).
+
+#include <cstdint>
+#include <memory>
+#include <optional>
+
+#include <glm/glm.hpp>
+
+#include "render/line_renderer.h"
+#include "render/overlay_geometry.h"
+#include "render/phong_gpu_deformer.h"
+#include "render/slice_renderer.h"
+#include "sculpt/display_settings.h"
+#include "sculpt/scene_controller.h"
+
+namespace sculpt::app {
+
+struct FieldRange {
+  float low = 0.0f, high = 1.0f;
+};
+
+class SceneView {
+ public:
+  SceneView() = default;
+  /// Replaces the scene drawn (rebuilds the static GPU data). Needs a current GL context.
+  void setGeometry(std::shared_ptr<const SceneGeometry> geometry);
+  bool hasGeometry() const { return geometry_ != nullptr; }
+  const SceneGeometry* geometry() const { return geometry_.get(); }
+
+  /// Takes a new simulation state and uploads what `display` needs of it.
+  void setFrame(const SceneFrame& frame, const DisplaySettings& display);
+  const SceneFrame& frame() const { return frame_; }
+
+  /// Draws with the current frame; `range` maps the field to the colour map.
+  void draw(const glm::mat4& view, const glm::mat4& projection, const DisplaySettings& display,
+            FieldRange range);
+
+  /// The field's minimum and maximum in the current frame (for the automatic colour range).
+  FieldRange fieldRange(FieldKind field) const;
+  /// Rest bounding sphere of the embedded surface.
+  glm::vec3 centre() const { return centre_; }
+  float radius() const { return radius_; }
+  /// Rest bounding box (clipping plane positions are fractions of it).
+  glm::vec3 boxLow() const { return boxLow_; }
+  glm::vec3 boxHigh() const { return boxHigh_; }
+  /// Bytes uploaded for the deformation by the last setFrame (node positions and gradients).
+  size_t lastUploadBytes() const { return deformer_ ? deformer_->frameUploadBytes() : 0; }
+  double lastUploadMs() const { return lastUploadMs_; }
+  /// Triangles of the embedded surface.
+  size_t numTriangles() const { return geometry_ ? geometry_->triangles.size() / 3 : 0; }
+  /// The deformer, for measurements (draw ratio) and tests.
+  render::PhongGpuDeformer* deformer() { return deformer_.get(); }
+
+ private:
+  void uploadDeformation(const DisplaySettings& display);
+  glm::vec4 clipPlane(const DisplaySettings& display) const;
+  std::vector<double> cellValues(FieldKind field) const;
+  std::vector<double> nodeDisplacements() const;
+
+  std::shared_ptr<const SceneGeometry> geometry_;
+  SceneFrame frame_;
+  std::unique_ptr<render::PhongGpuDeformer> deformer_;
+  render::LineRenderer grid_, axes_, controlMesh_, cells_;
+  render::SliceRenderer slice_;
+  std::vector<render::CellEdge> cellEdges_;  ///< level-K cell edges by element kind, per geometry
+  InterpolationMethod uploadedMethod_ = InterpolationMethod::Phong;
+  FieldKind uploadedField_ = FieldKind::None;
+  glm::vec3 centre_{0.0f}, boxLow_{0.0f}, boxHigh_{0.0f};
+  float radius_ = 1.0f;
+  double lastUploadMs_ = 0.0;
+};
+
+}  // namespace sculpt::app

@@ -1,0 +1,458 @@
+#include "sculpt/sculpt_app.h"
+
+#include <imgui.h>
+#include <imgui_impl_glfw.h>
+#include <imgui_impl_opengl3.h>
+
+#include <algorithm>
+#include <cmath>
+#include <ctime>
+#include <filesystem>
+#include <iostream>
+
+#include "render/image_downsample.h"
+#include "render/offscreen_target.h"
+#include "render/png_image.h"
+#include "sculpt/colour_bar.h"
+#include "sculpt/draw_benchmark.h"
+#include "sculpt/help_overlay.h"
+#include "sculpt/ui_scale.h"
+
+namespace sculpt::app {
+namespace {
+
+using Clock = std::chrono::steady_clock;
+
+double secondsSince(Clock::time_point start) {
+  return std::chrono::duration<double>(Clock::now() - start).count();
+}
+
+void clearBackground(bool transparent) {
+  glClearColor(0.16f, 0.17f, 0.19f, transparent ? 0.0f : 1.0f);
+  glClear(GL_COLOR_BUFFER_BIT | GL_DEPTH_BUFFER_BIT);
+}
+
+int glfwModifiers(const ImGuiIO& io) {
+  return (io.KeyShift ? GLFW_MOD_SHIFT : 0) | (io.KeyCtrl ? GLFW_MOD_CONTROL : 0) |
+         (io.KeyAlt ? GLFW_MOD_ALT : 0) | (io.KeySuper ? GLFW_MOD_SUPER : 0);
+}
+
+FieldKind nextField(FieldKind field) {
+  const auto it = std::find(kFieldKinds.begin(), kFieldKinds.end(), field);
+  return kFieldKinds[static_cast<size_t>((it - kFieldKinds.begin() + 1) % kFieldKinds.size())];
+}
+
+SceneSource sourceFor(const std::string& path) {
+  if (path.empty()) return {};
+  std::string extension = std::filesystem::path(path).extension().string();
+  std::transform(extension.begin(), extension.end(), extension.begin(),
+                 [](unsigned char c) { return static_cast<char>(std::tolower(c)); });
+  return {extension == ".json" ? SceneKind::ControlMesh : SceneKind::ImportedSurface, path};
+}
+
+}  // namespace
+
+SculptApp::SculptApp(GLFWwindow* window, const Options& options, Clock::time_point started)
+    : window_(window),
+      options_(options),
+      started_(started),
+      controller_(std::make_unique<SceneController>(!options.headless)),
+      navigator_(options.stylusPreset ? NavigationPreset::Stylus : NavigationPreset::Blender) {
+  model_.display = options.display;
+  model_.preset = navigator_.preset();
+  if (options.level) model_.settings.level = *options.level;
+  model_.sceneFile = options.scene;
+  model_.showPanels = !options.noUi;
+  model_.screenshot.supersample = options.supersample;
+  model_.screenshot.transparent = options.transparent;
+
+  IMGUI_CHECKVERSION();
+  ImGui::CreateContext();
+  ImGui::GetIO().IniFilename = nullptr;  // layout is fixed; preferences come with the next issue
+  ImGui_ImplGlfw_InitForOpenGL(window_, true);
+  ImGui_ImplOpenGL3_Init("#version 330 core");
+  imguiReady_ = true;
+  float sx = 1.0f, sy = 1.0f;
+  glfwGetWindowContentScale(window_, &sx, &sy);
+  model_.uiScale = uiScale(sx, sy, options.uiScale);
+  applyUiScale();
+
+  controller_->load(sourceFor(options.scene), model_.settings);
+  lastFrameTime_ = rateWindowStart_ = Clock::now();
+}
+
+SculptApp::~SculptApp() {
+  controller_.reset();  // stop the simulation before the GL objects go
+  if (imguiReady_) {
+    ImGui_ImplOpenGL3_Shutdown();
+    ImGui_ImplGlfw_Shutdown();
+    ImGui::DestroyContext();
+  }
+}
+
+void SculptApp::applyUiScale() { sculpt::app::applyUiScale(model_.uiScale); }
+
+float SculptApp::viewAspect() const {
+  const float w = lastView_.max.x - lastView_.min.x, h = lastView_.max.y - lastView_.min.y;
+  return w > 0 && h > 0 ? w / h : 1.6f;
+}
+
+void SculptApp::frameModel(bool withCage) {
+  if (!view_.hasGeometry()) return;
+  glm::vec3 centre = view_.centre();
+  float radius = view_.radius();
+  if (withCage) {  // the control points as well (Home: frame all)
+    const Points& control = view_.frame().control;
+    if (control.rows() > 0) {
+      const Eigen::Vector3d lo = control.colwise().minCoeff().transpose();
+      const Eigen::Vector3d hi = control.colwise().maxCoeff().transpose();
+      const glm::vec3 l(lo.x(), lo.y(), lo.z()), h(hi.x(), hi.y(), hi.z());
+      const glm::vec3 all = glm::min(l, view_.boxLow()), allHigh = glm::max(h, view_.boxHigh());
+      centre = 0.5f * (all + allHigh);
+      radius = 0.5f * glm::length(allHigh - all);
+    }
+  }
+  camera_.frame(centre, radius, viewAspect());
+  camera_.setSceneBounds(view_.centre(), 3.0f * view_.radius());
+}
+
+void SculptApp::syncScene() {
+  controller_->advance();  // headless: build and step here (a no-op with worker threads)
+  if (std::shared_ptr<const SceneGeometry> geometry = controller_->takeNewGeometry()) {
+    view_.setGeometry(geometry);
+    model_.status.description = geometry->description;
+    model_.status.elementCounts = geometry->elementCounts;
+    model_.status.triangles = view_.numTriangles();
+    if (!cameraFramed_) {
+      camera_.setOrientation(0.5f, 0.3f);
+      frameModel(false);
+      cameraFramed_ = true;
+    }
+  }
+  if (controller_->fetchNewer(latest_)) {
+    view_.setFrame(latest_, model_.display);
+    model_.status.simulationMs = latest_.stepMs;
+    model_.status.simulatedTime = latest_.simulatedTime;
+    model_.status.physicsReady = latest_.physicsReady;
+    model_.status.uploadBytes = view_.lastUploadBytes();
+    model_.status.uploadMs = view_.lastUploadMs();
+    if (!latest_.lastStep.message.empty() && latest_.lastStep.message != model_.status.lastStepMessage)
+      model_.toast(latest_.lastStep.message, !latest_.lastStep.ok);
+    model_.status.lastStepMessage = latest_.lastStep.message;
+  }
+  const double window = secondsSince(rateWindowStart_);
+  if (window > 1.0) {
+    model_.status.stepsPerSecond = static_cast<double>(latest_.version - rateWindowVersion_) / window;
+    rateWindowVersion_ = latest_.version;
+    rateWindowStart_ = Clock::now();
+  }
+  const BuildStatus build = controller_->buildStatus();
+  if (!build.error.empty() && build.error != model_.status.build.error) model_.toast(build.error, true, 8.0);
+  model_.status.build = build;
+  model_.status.playing = controller_->playing();
+  model_.status.nodes = view_.hasGeometry() ? view_.geometry()->cellMesh.numNodes() : 0;
+}
+
+void SculptApp::runAction(Action action) {
+  Requests& r = model_.requests;
+  DisplaySettings& d = model_.display;
+  switch (action) {
+    case Action::FrameModel: r.frameModel = true; break;
+    case Action::FrameAll: r.frameAll = true; break;
+    case Action::PlayPause: r.togglePlay = true; break;
+    case Action::StepOnce: r.stepOnce = true; break;
+    case Action::ResetSimulation: r.reset = true; break;
+    case Action::ToggleWireframe: d.wireframe = !d.wireframe; break;
+    case Action::ToggleFlatShading: d.flatShading = !d.flatShading; break;
+    case Action::ToggleCellEdges: d.showCells = !d.showCells; break;
+    case Action::ToggleSlice: d.clip = !d.clip; break;
+    case Action::CycleField: d.field = nextField(d.field); break;
+    case Action::CycleDeformation:
+      d.method = static_cast<InterpolationMethod>((static_cast<int>(d.method) + 1) % 4);
+      model_.toast("deformation: " + std::string(methodName(d.method)));
+      break;
+    case Action::ToggleHelp: model_.showHelp = !model_.showHelp; break;
+    case Action::Screenshot: r.screenshot = true; break;
+    case Action::Quit: r.quit = true; break;
+    default: applyCameraAction(action, camera_); break;
+  }
+}
+
+void SculptApp::handleInput(const ViewRect& view) {
+  const ImGuiIO& io = ImGui::GetIO();
+  if (!io.WantCaptureKeyboard) {
+    for (int key = GLFW_KEY_SPACE; key <= GLFW_KEY_LAST; ++key)
+      if (ImGui::IsKeyPressed(key, false))
+        if (const std::optional<Action> action = keys_.actionFor(key, glfwModifiers(io)))
+          runAction(*action);
+  }
+  if (navigator_.preset() != model_.preset) navigator_.setPreset(model_.preset);
+  PointerInput input;
+  input.x = io.MousePos.x - view.min.x;
+  input.y = io.MousePos.y - view.min.y;
+  input.dx = io.MousePos.x - lastCursorX_;
+  input.dy = io.MousePos.y - lastCursorY_;
+  lastCursorX_ = io.MousePos.x, lastCursorY_ = io.MousePos.y;
+  input.left = io.MouseDown[0], input.right = io.MouseDown[1], input.middle = io.MouseDown[2];
+  input.modifiers = glfwModifiers(io);
+  input.wheel = io.MouseWheel;
+  input.doubleClick = io.MouseDoubleClicked[0] || io.MouseDoubleClicked[2];
+  input.overObject = cursorDepth_ < 1.0f;
+  input.uiWantsMouse = io.WantCaptureMouse;
+  const int width = std::max(1, static_cast<int>(view.max.x - view.min.x));
+  const int height = std::max(1, static_cast<int>(view.max.y - view.min.y));
+  const PointerResult result = navigator_.update(input, camera_, width, height);
+  if (result.setPivotRequested && !io.WantCaptureMouse) {
+    if (const std::optional<glm::vec3> pivot =
+            camera_.unproject(input.x, input.y, cursorDepth_, width, height))
+      camera_.setPivot(*pivot);
+  }
+}
+
+void SculptApp::carryOutRequests() {
+  Requests r = std::exchange(model_.requests, Requests{});
+  if (r.quit) glfwSetWindowShouldClose(window_, 1);
+  if (r.frameModel) frameModel(false);
+  if (r.frameAll) frameModel(true);
+  if (r.standardView) camera_.setStandardView(*r.standardView);
+  if (r.toggleOrthographic) camera_.toggleOrthographic();
+  if (r.togglePlay) controller_->setPlaying(!controller_->playing());
+  if (r.stepOnce) {
+    controller_->setPlaying(false);
+    controller_->stepOnce();
+  }
+  if (r.reset) controller_->reset();
+  try {
+    if (r.applySettings) controller_->applySettings(model_.settings);
+    if (!r.loadScene.empty()) loadScene(r.loadScene == "<default>" ? std::string() : r.loadScene);
+  } catch (const std::invalid_argument& error) {
+    model_.toast(error.what(), true, 8.0);
+  }
+  if (r.cancelBuild) controller_->cancelBuild();
+  if (r.uiScaleChanged) applyUiScale();
+  if (r.screenshot) {
+    const std::string path = nextScreenshotPath();
+    try {
+      writeScreenshot(path, model_.screenshot);
+      model_.toast("wrote " + path);
+    } catch (const std::exception& error) {
+      model_.toast(std::string("screenshot failed: ") + error.what(), true, 8.0);
+    }
+  }
+}
+
+void SculptApp::loadScene(const std::string& path) {
+  model_.sceneFile = path;
+  cameraFramed_ = false;
+  controller_->load(sourceFor(path), model_.settings);
+}
+
+std::string SculptApp::nextScreenshotPath() const {
+  const std::time_t now = std::time(nullptr);
+  char stamp[32];
+  std::strftime(stamp, sizeof stamp, "%Y%m%d-%H%M%S", std::localtime(&now));
+  std::filesystem::path path = std::filesystem::path(model_.screenshot.folder) /
+                               (std::string("sculpt-") + stamp + ".png");
+  for (int k = 2; std::filesystem::exists(path); ++k)
+    path = std::filesystem::path(model_.screenshot.folder) /
+           (std::string("sculpt-") + stamp + "-" + std::to_string(k) + ".png");
+  return path.string();
+}
+
+void SculptApp::drawScene(const ViewRect& view, int fbWidth, int fbHeight, float pixelScale) {
+  // The 3D view's rectangle in framebuffer pixels (GL's origin is the bottom left).
+  const int x = static_cast<int>(std::lround(view.min.x * pixelScale));
+  const int w = std::max(1, static_cast<int>(std::lround((view.max.x - view.min.x) * pixelScale)));
+  const int h = std::max(1, static_cast<int>(std::lround((view.max.y - view.min.y) * pixelScale)));
+  const int y = fbHeight - static_cast<int>(std::lround(view.max.y * pixelScale));
+  (void)fbWidth;
+  glViewport(x, y, w, h);
+  glEnable(GL_DEPTH_TEST);
+  if (!view_.hasGeometry()) return;
+  const DisplaySettings& display = model_.display;
+  FieldRange range = view_.fieldRange(display.field);
+  if (!display.autoRange) range = {display.rangeLow, display.rangeHigh};
+  model_.fieldRange = range;
+  deformTimer_.begin();
+  view_.draw(camera_.view(), camera_.projection(static_cast<float>(w) / static_cast<float>(h)),
+             display, range);
+  deformTimer_.end();
+  model_.status.deformationMs = deformTimer_.lastMilliseconds();
+}
+
+void SculptApp::frame(int fbWidth, int fbHeight, bool interactive) {
+  const auto now = Clock::now();
+  model_.status.frameMs = std::chrono::duration<double, std::milli>(now - lastFrameTime_).count();
+  lastFrameTime_ = now;
+  syncScene();
+
+  ImGui_ImplOpenGL3_NewFrame();
+  ImGui_ImplGlfw_NewFrame();
+  ImGui::NewFrame();
+  ViewRect view;
+  if (options_.noUi) {
+    const ImGuiViewport* viewport = ImGui::GetMainViewport();
+    view = {viewport->Pos, ImVec2(viewport->Pos.x + viewport->Size.x, viewport->Pos.y + viewport->Size.y)};
+  } else {
+    view = drawPanels(model_);
+    drawColourBar(model_.display.field, model_.fieldRange, view.min, view.max);
+    drawBuildProgress(model_, view);
+    drawToasts(model_, view);
+    if (model_.showHelp) drawHelpOverlay(keys_, model_.preset, &model_.showHelp);
+  }
+  lastView_ = view;
+  if (interactive) handleInput(view);
+  ImGui::Render();
+
+  const float pixelScale = ImGui::GetIO().DisplayFramebufferScale.x;
+  glViewport(0, 0, fbWidth, fbHeight);
+  glDisable(GL_SCISSOR_TEST);
+  clearBackground(false);
+  drawScene(view, fbWidth, fbHeight, pixelScale);
+  if (interactive && view_.hasGeometry()) {
+    // Depth under the cursor, for the pivot (double click) and the Stylus preset's
+    // object-or-background test in the next frame.
+    const ImVec2 mouse = ImGui::GetIO().MousePos;
+    const int px = static_cast<int>(mouse.x * pixelScale);
+    const int py = fbHeight - 1 - static_cast<int>(mouse.y * pixelScale);
+    cursorDepth_ = 1.0f;
+    if (px >= 0 && py >= 0 && px < fbWidth && py < fbHeight)
+      glReadPixels(px, py, 1, 1, GL_DEPTH_COMPONENT, GL_FLOAT, &cursorDepth_);
+  }
+  glViewport(0, 0, fbWidth, fbHeight);
+  if (!options_.noUi) ImGui_ImplOpenGL3_RenderDrawData(ImGui::GetDrawData());
+  lastFbWidth_ = fbWidth, lastFbHeight_ = fbHeight;
+  carryOutRequests();
+  if (view_.hasGeometry() && !firstFrameReported_) reportFirstFrame();
+}
+
+void SculptApp::reportFirstFrame() {
+  firstFrameReported_ = true;
+  firstFrameSeconds_ = secondsSince(started_);
+  char text[96];
+  std::snprintf(text, sizeof text, "first frame with the scene after %.2f s", firstFrameSeconds_);
+  std::cout << text << std::endl;
+}
+
+void SculptApp::writeScreenshot(const std::string& path, const ScreenshotSettings& settings) {
+  const int s = settings.supersample;
+  const float pixelScale = ImGui::GetIO().DisplayFramebufferScale.x;
+  const bool panels = settings.includePanels && !options_.noUi;
+  // Without panels the image is the 3D view alone, at its framebuffer size.
+  ViewRect view = lastView_;
+  int width = lastFbWidth_, height = lastFbHeight_;
+  if (!panels) {
+    width = static_cast<int>(std::lround((view.max.x - view.min.x) * pixelScale));
+    height = static_cast<int>(std::lround((view.max.y - view.min.y) * pixelScale));
+    view = {ImVec2(0, 0), ImVec2(view.max.x - view.min.x, view.max.y - view.min.y)};
+  }
+  render::OffscreenTarget target(width * s, height * s);
+  target.bind();
+  glViewport(0, 0, width * s, height * s);
+  clearBackground(settings.transparent);
+  drawScene(view, width * s, height * s, pixelScale * static_cast<float>(s));
+  if (panels) {
+    ImDrawData* drawData = ImGui::GetDrawData();
+    const ImVec2 saved = drawData->FramebufferScale;
+    drawData->FramebufferScale = ImVec2(saved.x * static_cast<float>(s), saved.y * static_cast<float>(s));
+    glViewport(0, 0, width * s, height * s);
+    ImGui_ImplOpenGL3_RenderDrawData(drawData);
+    drawData->FramebufferScale = saved;
+  }
+  std::vector<uint8_t> pixels = target.readPixels();
+  glBindFramebuffer(GL_FRAMEBUFFER, 0);
+  if (s > 1) pixels = render::downsample(pixels, width * s, height * s, s);
+  if (!settings.transparent)
+    for (size_t i = 3; i < pixels.size(); i += 4) pixels[i] = 255;
+  const std::filesystem::path parent = std::filesystem::path(path).parent_path();
+  if (!parent.empty()) std::filesystem::create_directories(parent);
+  render::writePng(path, width, height, pixels);
+}
+
+int SculptApp::runWindow() {
+  const auto started = Clock::now();
+  while (!glfwWindowShouldClose(window_)) {
+    if (options_.quitAfter > 0.0 && secondsSince(started) > options_.quitAfter)
+      glfwSetWindowShouldClose(window_, 1);
+    glfwPollEvents();
+    int width = 0, height = 0;
+    glfwGetFramebufferSize(window_, &width, &height);
+    if (width <= 0 || height <= 0) {  // minimised
+      glfwWaitEventsTimeout(0.1);
+      continue;
+    }
+    glBindFramebuffer(GL_FRAMEBUFFER, 0);
+    frame(width, height, true);
+    glfwSwapBuffers(window_);
+  }
+  return 0;
+}
+
+int SculptApp::runHeadless() {
+  int width = 0, height = 0;
+  glfwGetFramebufferSize(window_, &width, &height);
+  render::OffscreenTarget target(width, height);
+  for (int k = 0; k < options_.frames; ++k) {
+    target.bind();
+    frame(width, height, false);
+    const BuildStatus build = controller_->buildStatus();
+    if (!build.error.empty() && !view_.hasGeometry()) {
+      std::cerr << "error: " << build.error << '\n';
+      return 2;
+    }
+  }
+  glFinish();
+  ScreenshotSettings settings = model_.screenshot;
+  settings.includePanels = !options_.noUi;
+  writeScreenshot(options_.screenshot, settings);
+  std::cout << "wrote " << options_.screenshot << " (" << width << "x" << height << ", "
+            << options_.frames << " frames, " << model_.status.triangles << " triangles, "
+            << model_.status.description << ", simulated " << model_.status.simulatedTime
+            << " s)\n";
+  return 0;
+}
+
+}  // namespace sculpt::app
+
+namespace sculpt::app {
+
+int SculptApp::runBenchmark() {
+  int width = 0, height = 0;
+  glfwGetFramebufferSize(window_, &width, &height);
+  render::OffscreenTarget target(width, height);
+  std::vector<double> frameMs, stepMs, uploadMs;
+  for (int k = 0; k < options_.benchFrames; ++k) {
+    target.bind();
+    const auto start = Clock::now();
+    frame(width, height, false);
+    glFinish();
+    frameMs.push_back(std::chrono::duration<double, std::milli>(Clock::now() - start).count());
+    stepMs.push_back(latest_.stepMs);
+    uploadMs.push_back(view_.lastUploadMs());
+    if (!view_.hasGeometry()) {
+      std::cerr << "error: " << controller_->buildStatus().error << '\n';
+      return 2;
+    }
+  }
+  const auto median = [](std::vector<double> v) {
+    std::sort(v.begin(), v.end());
+    return v.empty() ? 0.0 : v[v.size() / 2];
+  };
+  target.bind();
+  const float aspect = viewAspect();
+  const DrawMeasurement draw = measureDrawing(*view_.deformer(), view_.geometry()->triangles,
+                                              camera_.view(), camera_.projection(aspect), 15);
+  const SceneGeometry& g = *view_.geometry();
+  for (const auto& [stage, ms] : controller_->buildStatus().stageMs) std::cout << "stage " << stage << ": " << ms << " ms\n";
+  std::cout << "first_frame_s=" << firstFrameSeconds_ << " frames=" << options_.benchFrames
+            << " size=" << width << "x" << height << " triangles=" << view_.numTriangles()
+            << " vertices=" << g.restPositions.rows() << " nodes=" << g.cellMesh.numNodes()
+            << " cells=" << g.cellMesh.numCells() << " upload_bytes=" << view_.lastUploadBytes()
+            << " cpu_path_bytes=" << 24 * g.restPositions.rows()
+            << " upload_ms=" << median(uploadMs) << " step_ms=" << median(stepMs)
+            << " frame_ms=" << median(frameMs) << " deformed_draw_ms=" << draw.deformedMs
+            << " static_draw_ms=" << draw.staticMs << " draw_ratio=" << draw.ratio() << '\n';
+  return 0;
+}
+
+}  // namespace sculpt::app
