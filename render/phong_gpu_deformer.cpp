@@ -3,9 +3,12 @@
 #include <algorithm>
 #include <array>
 #include <iterator>
-#include <string>
 #include <stdexcept>
+#include <string>
 
+#include <Eigen/LU>
+
+#include "embed/cell_coordinates.h"
 #include "render/gl_buffers.h"
 #include "shader_sources.h"
 
@@ -55,17 +58,20 @@ PhongGpuDeformer::PhongGpuDeformer(const VolumeMesh& rest, std::span<const uint3
     : program_("phong_deform", shaders::kPhongDeformVert, nullptr, kFeedback),
       drawProgram_("phong_surface", shaders::kPhongDeformVert, surfaceFragmentSource().c_str()),
       numVertices_(static_cast<uint32_t>(cells.size())),
-      numCells_(rest.numCells()) {
+      numCells_(rest.numCells()),
+      restNodes_(rest.positions) {
   if (local.size() != 3 * cells.size() || restNormals.size() != 3 * cells.size())
     throw std::invalid_argument("PhongGpuDeformer: per-vertex arrays differ in length");
-  // Static cell table: 8 node ids per cell, -1 padding for tetrahedra.
+  for (const uint32_t c : cells)
+    if (c >= rest.numCells())
+      throw std::invalid_argument("PhongGpuDeformer: a vertex lies in cell " + std::to_string(c) +
+                                  " of " + std::to_string(rest.numCells()));
+  // 8 node ids per cell, -1 padding for tetrahedra.
   std::vector<int32_t> cellNodes(8 * static_cast<size_t>(rest.numCells()), -1);
   for (uint32_t c = 0; c < rest.numCells(); ++c) {
     const auto nodes = rest.cells.row(c);
     for (size_t k = 0; k < nodes.size(); ++k) cellNodes[8 * c + k] = static_cast<int32_t>(nodes[k]);
   }
-  makeBufferTexture(cellNodesBuffer_, cellNodesTexture_, GL_R32I, cellNodes.data(),
-                    cellNodes.size() * sizeof(int32_t), GL_STATIC_DRAW);
   std::vector<float> restNodes(4 * static_cast<size_t>(rest.numNodes()), 0.0f);
   for (uint32_t i = 0; i < rest.numNodes(); ++i)
     for (int d = 0; d < 3; ++d) restNodes[4 * i + d] = static_cast<float>(rest.positions(i, d));
@@ -94,6 +100,40 @@ PhongGpuDeformer::PhongGpuDeformer(const VolumeMesh& rest, std::span<const uint3
   normalBuffer_ = makeVertexBuffer(restNormals.data(), restNormals.size_bytes());
   glEnableVertexAttribArray(2);
   glVertexAttribPointer(2, 3, GL_FLOAT, GL_FALSE, 0, nullptr);
+  // Static per-vertex rest point X and inverse rest Jacobian d xi / d X (columns), so that the
+  // shader needs no rest node positions and no matrix inverse.
+  std::vector<float> restPoint(3 * static_cast<size_t>(numVertices_));
+  std::vector<float> inverseJacobian(9 * static_cast<size_t>(numVertices_));
+  for (uint32_t v = 0; v < numVertices_; ++v) {
+    const Eigen::Vector3d xi(local[3 * v], local[3 * v + 1], local[3 * v + 2]);
+    const Eigen::Vector3d X = cellPoint(rest, cells[v], xi);
+    const Eigen::Matrix3d inverse = cellJacobian(rest, cells[v], xi).inverse();
+    for (int d = 0; d < 3; ++d) restPoint[3 * v + d] = static_cast<float>(X(d));
+    for (int c = 0; c < 3; ++c)
+      for (int r = 0; r < 3; ++r) inverseJacobian[9 * v + 3 * c + r] = static_cast<float>(inverse(r, c));
+  }
+  restPointBuffer_ = makeVertexBuffer(restPoint.data(), restPoint.size() * sizeof(float));
+  glEnableVertexAttribArray(4);
+  glVertexAttribPointer(4, 3, GL_FLOAT, GL_FALSE, 0, nullptr);
+  inverseJacobianBuffer_ =
+      makeVertexBuffer(inverseJacobian.data(), inverseJacobian.size() * sizeof(float));
+  for (int c = 0; c < 3; ++c) {
+    glEnableVertexAttribArray(static_cast<GLuint>(5 + c));
+    glVertexAttribPointer(static_cast<GLuint>(5 + c), 3, GL_FLOAT, GL_FALSE, 9 * sizeof(float),
+                          reinterpret_cast<const void*>(3 * sizeof(float) * static_cast<size_t>(c)));
+  }
+  // The cell's 8 node ids per vertex (two ivec4; -1 padding for tetrahedra): attributes are
+  // cheaper for the vertex shader than fetches from the cell table.
+  std::vector<int32_t> vertexNodes(8 * static_cast<size_t>(numVertices_));
+  for (uint32_t v = 0; v < numVertices_; ++v)
+    std::copy_n(cellNodes.begin() + 8 * static_cast<std::ptrdiff_t>(cells[v]), 8,
+                vertexNodes.begin() + 8 * static_cast<std::ptrdiff_t>(v));
+  vertexNodesBuffer_ = makeVertexBuffer(vertexNodes.data(), vertexNodes.size() * sizeof(int32_t));
+  for (int half = 0; half < 2; ++half) {
+    glEnableVertexAttribArray(static_cast<GLuint>(8 + half));
+    glVertexAttribIPointer(static_cast<GLuint>(8 + half), 4, GL_INT, 8 * sizeof(int32_t),
+                           reinterpret_cast<const void*>(4 * sizeof(int32_t) * static_cast<size_t>(half)));
+  }
   const std::vector<int32_t> noNeighbours(2 * static_cast<size_t>(numVertices_), 0);
   neighbourRangeBuffer_ = makeVertexBuffer(noNeighbours.data(), noNeighbours.size() * sizeof(int32_t));
   glEnableVertexAttribArray(3);
@@ -111,11 +151,12 @@ PhongGpuDeformer::PhongGpuDeformer(const VolumeMesh& rest, std::span<const uint3
 
 PhongGpuDeformer::~PhongGpuDeformer() {
   const GLuint buffers[] = {cellBuffer_,           localBuffer_,           normalBuffer_,
-                            cellNodesBuffer_,      restNodesBuffer_,       frameBuffer_,
+                            restNodesBuffer_,       frameBuffer_,
                             feedbackBuffer_,       indexBuffer_,           neighbourRangeBuffer_,
-                            attributeNodesBuffer_, attributeWeightsBuffer_, cellFieldBuffer_};
+                            attributeNodesBuffer_, attributeWeightsBuffer_, cellFieldBuffer_,
+                            restPointBuffer_,      inverseJacobianBuffer_, vertexNodesBuffer_};
   glDeleteBuffers(static_cast<GLsizei>(std::size(buffers)), buffers);
-  const GLuint textures[] = {cellNodesTexture_, restNodesTexture_, frameTexture_,
+  const GLuint textures[] = {restNodesTexture_, frameTexture_,
                              attributeNodesTexture_, attributeWeightsTexture_, cellFieldTexture_};
   glDeleteTextures(static_cast<GLsizei>(std::size(textures)), textures);
   glDeleteVertexArrays(1, &vao_);
@@ -126,20 +167,26 @@ void PhongGpuDeformer::setFrame(
     const std::vector<Eigen::Matrix3d>& gradients, InterpolationMethod method) {
   if (method == InterpolationMethod::Attribute && !hasAttribute_)
     throw std::logic_error("PhongGpuDeformer: the attribute method needs its neighbours first");
-  // 4 texels per node: x_i, then the three rows of F_i (zero when gradients are not given).
-  std::vector<float> data(16 * static_cast<size_t>(nodes.rows()), 0.0f);
-  for (Eigen::Index i = 0; i < nodes.rows(); ++i) {
-    float* node = data.data() + 16 * i;
-    for (int d = 0; d < 3; ++d) node[d] = static_cast<float>(nodes(i, d));
-    if (static_cast<size_t>(i) < gradients.size())
-      for (int r = 0; r < 3; ++r)
-        for (int c = 0; c < 3; ++c) node[4 * (r + 1) + c] = static_cast<float>(gradients[i](r, c));
-  }
-  frameUploadBytes_ = data.size() * sizeof(float);
-  uploadBuffer(frameBuffer_, data.data(), frameUploadBytes_, GL_STREAM_DRAW);
   attribute_ = method == InterpolationMethod::Attribute;
   // The attribute method keeps the Phong normal (it has no useful gradient of its own).
   alpha_ = attribute_ ? 0.5f : static_cast<float>(gradientBlend(method));
+  if (nodes.rows() != restNodes_.rows())
+    throw std::invalid_argument("PhongGpuDeformer: " + std::to_string(nodes.rows()) +
+                                " node positions for " + std::to_string(restNodes_.rows()) + " nodes");
+  // 4 texels per node: x_i - H_i X_i, then the three rows of H_i = alpha F_i (H_i = 0 when
+  // gradients are not given).
+  std::vector<float> data(16 * static_cast<size_t>(nodes.rows()), 0.0f);
+  for (Eigen::Index i = 0; i < nodes.rows(); ++i) {
+    float* node = data.data() + 16 * i;
+    Eigen::Matrix3d H = Eigen::Matrix3d::Zero();
+    if (static_cast<size_t>(i) < gradients.size()) H = alpha_ * gradients[static_cast<size_t>(i)];
+    const Eigen::Vector3d offset = nodes.row(i).transpose() - H * restNodes_.row(i).transpose();
+    for (int d = 0; d < 3; ++d) node[d] = static_cast<float>(offset(d));
+    for (int r = 0; r < 3; ++r)
+      for (int c = 0; c < 3; ++c) node[4 * (r + 1) + c] = static_cast<float>(H(r, c));
+  }
+  frameUploadBytes_ = data.size() * sizeof(float);
+  uploadBuffer(frameBuffer_, data.data(), frameUploadBytes_, GL_STREAM_DRAW);
 }
 
 void PhongGpuDeformer::setAttributeNeighbours(const CompressedRows<NodeWeight>& neighbours) {
@@ -181,17 +228,16 @@ void PhongGpuDeformer::setCellField(std::span<const float> values) {
 
 void PhongGpuDeformer::bindFrameTextures(const ShaderProgram& program) const {
   program.use();
-  const GLuint textures[] = {cellNodesTexture_,     restNodesTexture_,        frameTexture_,
-                             attributeNodesTexture_, attributeWeightsTexture_, cellFieldTexture_};
-  const char* samplers[] = {"cellNodes",      "restNodes",        "frameNodes",
-                            "attributeNodes", "attributeWeights", "cellField"};
-  for (int unit = 0; unit < 6; ++unit) {
+  const GLuint textures[] = {restNodesTexture_, frameTexture_, attributeNodesTexture_,
+                             attributeWeightsTexture_, cellFieldTexture_};
+  const char* samplers[] = {"restNodes", "frameNodes", "attributeNodes", "attributeWeights",
+                            "cellField"};
+  for (int unit = 0; unit < 5; ++unit) {
     glActiveTexture(static_cast<GLenum>(GL_TEXTURE0 + unit));
     glBindTexture(GL_TEXTURE_BUFFER, textures[unit]);
     glUniform1i(program.uniform(samplers[unit]), unit);
   }
   glActiveTexture(GL_TEXTURE0);
-  glUniform1f(program.uniform("alpha"), alpha_);
   glUniform1i(program.uniform("attributeMethod"), attribute_ ? 1 : 0);
 }
 

@@ -48,7 +48,7 @@ class PhongGpuDeformer {
   PhongGpuDeformer& operator=(const PhongGpuDeformer&) = delete;
 
   /// Uploads node positions (#nodes by 3) and node gradients F_i (O(nodes)); `method` picks the
-  /// interpolation. Attribute needs setAttributeNeighbours() first (std::logic_error otherwise).
+  /// interpolation (a change of method needs a new setFrame). Attribute needs setAttributeNeighbours() first (std::logic_error otherwise).
   void setFrame(const Eigen::Matrix<double, Eigen::Dynamic, 3, Eigen::RowMajor>& nodes,
                 const std::vector<Eigen::Matrix3d>& gradients, InterpolationMethod method);
   /// Per vertex, its attribute-method neighbour nodes and weights (attributeTransferWeights).
@@ -77,15 +77,16 @@ class PhongGpuDeformer {
   GLuint indexBuffer_ = 0;
   GLsizei indexCount_ = 0;
   GLuint vao_ = 0, cellBuffer_ = 0, localBuffer_ = 0, normalBuffer_ = 0;
-  GLuint cellNodesBuffer_ = 0, cellNodesTexture_ = 0;
   GLuint restNodesBuffer_ = 0, restNodesTexture_ = 0;
   GLuint frameBuffer_ = 0, frameTexture_ = 0;
   GLuint feedbackBuffer_ = 0;
+  GLuint restPointBuffer_ = 0, inverseJacobianBuffer_ = 0, vertexNodesBuffer_ = 0;
   GLuint neighbourRangeBuffer_ = 0;  ///< per vertex (first, count) of the attribute method
   GLuint attributeNodesBuffer_ = 0, attributeNodesTexture_ = 0;
   GLuint attributeWeightsBuffer_ = 0, attributeWeightsTexture_ = 0;
   GLuint cellFieldBuffer_ = 0, cellFieldTexture_ = 0;
   uint32_t numVertices_ = 0, numCells_ = 0;
+  Eigen::Matrix<double, Eigen::Dynamic, 3, Eigen::RowMajor> restNodes_;
   float alpha_ = 0.5f;
   bool attribute_ = false, hasAttribute_ = false;
   size_t frameUploadBytes_ = 0;

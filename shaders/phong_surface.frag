@@ -1,11 +1,10 @@
 // (render/ prepends "#version 330 core", lighting.glsl and colour_map.glsl)
-// Shades the GPU-deformed surface: phong_deform.vert outputs world-space position and normal, and
+// Shades the GPU-deformed surface: phong_deform.vert outputs view-space position and normal, and
 // a field value that, when a field is shown, replaces the base colour through the colour map.
-in vec3 deformedPosition;
-in vec3 deformedNormal;
+in vec3 viewPosition;
+in vec3 viewNormal;
 in float fieldValue;
 
-uniform mat4 modelView;
 uniform vec3 baseColour;
 uniform int fieldMode;
 uniform vec2 fieldRange;   // values mapped to the ends of the colour map
@@ -19,9 +18,7 @@ void main() {
     colour = solidColour;
     return;
   }
-  vec3 viewPosition = (modelView * vec4(deformedPosition, 1.0)).xyz;
-  vec3 normal = flatShading ? cross(dFdx(viewPosition), dFdy(viewPosition))
-                            : mat3(modelView) * deformedNormal;
+  vec3 normal = flatShading ? cross(dFdx(viewPosition), dFdy(viewPosition)) : viewNormal;
   vec3 base = baseColour;
   if (fieldMode != 0) {
     float span = max(fieldRange.y - fieldRange.x, 1e-30);
