@@ -81,17 +81,18 @@ void drawHelpOverlay(const KeyMap& keys, NavigationPreset preset, bool* open) {
       ImGui::EndTable();
     }
     ImGui::Spacing();
-    // Keys: View on the left; Simulation, Display and File on the right
-    if (ImGui::BeginTable("groups", 2,
-                          ImGuiTableFlags_SizingFixedFit | ImGuiTableFlags_BordersInnerV)) {
-      ImGui::TableNextColumn();
-      drawGroup(keys, ActionGroup::View);
-      ImGui::TableNextColumn();
-      drawGroup(keys, ActionGroup::Simulation);
-      drawGroup(keys, ActionGroup::Display);
-      drawGroup(keys, ActionGroup::File);
-      ImGui::EndTable();
-    }
+    // Keys: View on the left; Simulation, Display and File on the right. Two groups side by
+    // side rather than an outer table: fixed-fit tables nested in a table of an auto-resizing
+    // window collapse to a few pixels in ImGui 1.86.
+    ImGui::BeginGroup();
+    drawGroup(keys, ActionGroup::View);
+    ImGui::EndGroup();
+    ImGui::SameLine(0.0f, 3.0f * ImGui::GetStyle().ItemSpacing.x);
+    ImGui::BeginGroup();
+    drawGroup(keys, ActionGroup::Simulation);
+    drawGroup(keys, ActionGroup::Display);
+    drawGroup(keys, ActionGroup::File);
+    ImGui::EndGroup();
     if (keys.actionFor('1', 0) == Action::ViewFront)  // GLFW_KEY_1 is '1'
       ImGui::TextDisabled("The top-row digits 1, 3, 7 and 5 stand in for the numpad on laptops.");
     ImGui::TextDisabled("Keys do nothing while a text field has the keyboard.");

@@ -17,6 +17,7 @@ const char* const kUsage =
     "  --wireframe --flat --show-cells --show-control --no-grid\n"
     "  --preset blender|stylus  mouse navigation preset (default blender)\n"
     "  --ui-scale S           1..3 (default: the monitor's content scale)\n"
+    "  --show-help            open the keys-and-mouse overlay (F1) at start\n"
     "  --headless             render offscreen (needs an X display: use xvfb-run without one)\n"
     "  --screenshot OUT.png   headless: write the last frame there\n"
     "  --frames N             headless: frames to simulate and draw (default 60)\n"
@@ -106,6 +107,8 @@ Options parseOptions(int argc, char** argv, bool* helpShown) {
       if (name != "blender" && name != "stylus")
         throw std::invalid_argument("--preset must be blender or stylus (got '" + name + "')");
       options.stylusPreset = name == "stylus";
+    } else if (arg == "--show-help") {
+      options.showHelp = true;
     } else if (arg == "--ui-scale") {
       options.uiScale = static_cast<float>(positive(arg, value()));
       if (options.uiScale < 1.0f || options.uiScale > 3.0f)

@@ -17,6 +17,7 @@ struct Options {
   std::optional<int> level;  ///< simulation level K
   DisplaySettings display;
   bool stylusPreset = false;
+  bool showHelp = false;  ///< open the keys-and-mouse overlay at start
   float uiScale = 0.0f;  ///< 0: from the monitor's content scale
   bool headless = false;
   int frames = 60;

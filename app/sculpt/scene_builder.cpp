@@ -112,7 +112,7 @@ Material defaultSceneMaterial() {
   material.youngs = 3.0e6;
   material.poisson = 0.3;
   material.density = 1000.0;
-  material.damping = 1000.0;
+  material.damping = 2000.0;
   return material;
 }
 
@@ -137,11 +137,17 @@ std::string sceneSettingsProblem(const SceneSettings& s) {
   return settingsProblem(simulation);
 }
 
-std::optional<SceneBuildPhase1> buildSceneGeometry(const SceneSource& source,
-                                                   const SceneSettings& settings, uint64_t sceneId,
-                                                   ProgressReporter* progress) {
-  if (const std::string problem = sceneSettingsProblem(settings); !problem.empty())
-    throw std::invalid_argument(problem);
+namespace {
+
+std::string bunnyPath(const SceneSource& source) {
+  return source.kind == SceneKind::DefaultBunny && source.path.empty()
+             ? std::string(SCULPT_SOURCE_DIR) + "/assets/bunny.obj"
+             : source.path;
+}
+
+std::optional<SceneBuildPhase1> buildPhase1(const SceneSource& source,
+                                            const SceneSettings& settings, uint64_t sceneId,
+                                            ProgressReporter* progress) {
   auto geometry = std::make_shared<SceneGeometry>();
   auto solid = std::make_shared<SceneSolid>();
   geometry->sceneId = sceneId;
@@ -177,9 +183,7 @@ std::optional<SceneBuildPhase1> buildSceneGeometry(const SceneSource& source,
     clock.lap("refine");
   } else {
     const bool bunny = source.kind == SceneKind::DefaultBunny;
-    const std::string path =
-        bunny && source.path.empty() ? std::string(SCULPT_SOURCE_DIR) + "/assets/bunny.obj"
-                                     : source.path;
+    const std::string path = bunnyPath(source);
     const SurfaceMesh surface = readSurface(path);
     clock.lap("read");
     BuildStage refine(progress, 0.01, 0.04, "refining the surface");
@@ -201,8 +205,7 @@ std::optional<SceneBuildPhase1> buildSceneGeometry(const SceneSource& source,
   geometry->restPositions = shape.display.positions;
   geometry->restNormals = vertexNormals(shape.display);
   geometry->triangles = triangulate(shape.display);
-  if (geometry->triangles.empty())
-    throw std::runtime_error("the surface of the scene has no faces to draw");
+  if (geometry->triangles.empty()) throw std::runtime_error("the surface has no faces to draw");
   clock.lap("normals");
 
   // The solid at level K and its cells
@@ -260,6 +263,23 @@ std::optional<SceneBuildPhase1> buildSceneGeometry(const SceneSource& source,
   solid->cellSize = shape.cellSize;
   geometry->description = shape.description + ", level " + std::to_string(settings.level);
   return SceneBuildPhase1{std::move(geometry), std::move(solid)};
+}
+
+}  // namespace
+
+std::optional<SceneBuildPhase1> buildSceneGeometry(const SceneSource& source,
+                                                   const SceneSettings& settings, uint64_t sceneId,
+                                                   ProgressReporter* progress) {
+  if (const std::string problem = sceneSettingsProblem(settings); !problem.empty())
+    throw std::invalid_argument(problem);
+  try {
+    return buildPhase1(source, settings, sceneId, progress);
+  } catch (const std::exception& e) {
+    // Every failure names the file it concerns.
+    const std::string name = fileName(bunnyPath(source));
+    if (std::string(e.what()).find(name) != std::string::npos) throw;
+    throw std::runtime_error(name + ": " + e.what());
+  }
 }
 
 }  // namespace sculpt::app

@@ -152,8 +152,14 @@ void SceneController::applySettings(const SceneSettings& settings) {
   simulationWake_.notify_one();
 }
 
-void SceneController::advance() {
+void SceneController::advance(bool displayFirst) {
   if (threaded_) return;
+  // A phase 2 left for this call (displayFirst): run it, unless it was cancelled meanwhile.
+  if (std::optional<Phase2> work = std::exchange(deferred_, std::nullopt)) {
+    runPhase2(*work);
+    const std::lock_guard lock(mutex_);
+    runningJob_.reset();
+  }
   for (;;) {
     Job job;
     {
@@ -163,7 +169,12 @@ void SceneController::advance() {
       pendingJob_.reset();
       runningJob_ = job;
     }
-    runJob(job);
+    std::optional<Phase2> work = runPhase1(job);
+    if (work && displayFirst && work->early) {
+      deferred_ = std::move(work);  // still in flight (runningJob_): load() and cancel see it
+      return;
+    }
+    if (work) runPhase2(*work);
     const std::lock_guard lock(mutex_);
     runningJob_.reset();
   }
@@ -188,13 +199,13 @@ void SceneController::finishJob(const Job& job, const std::string& error, const 
   if (times) status_.stageMs = *times;
 }
 
-void SceneController::runJob(const Job& job) {
+ProgressReporter SceneController::progressFor(const Job& job) {
   ProgressCallback observer;
   {
     const std::lock_guard lock(mutex_);
     observer = observer_;
   }
-  ProgressReporter progress([&](double fraction, std::string_view stage) {
+  return ProgressReporter([this, &job, observer](double fraction, std::string_view stage) {
     if (job.cancel->load() || stop_.load()) return false;
     {
       const std::lock_guard lock(mutex_);
@@ -206,54 +217,73 @@ void SceneController::runJob(const Job& job) {
     if (observer && !observer(fraction, stage)) job.cancel->store(true);
     return !job.cancel->load() && !stop_.load();
   });
-  auto cancelled = [&] { return job.cancel->load() || stop_.load(); };
+}
+
+bool SceneController::cancelled(const Job& job) const {
+  return job.cancel->load() || stop_.load();
+}
+
+void SceneController::abandon(const Job& job) {
   // A cancelled build (cancelBuild, a newer load, the observer, destruction) ends quietly.
-  auto abandon = [&] {
-    const std::lock_guard lock(mutex_);
-    if (job.id != latestJob_) return;
-    status_.running = false;
-    status_.fraction = 0.0;
-    status_.stage.clear();
-    status_.error.clear();
-  };
+  const std::lock_guard lock(mutex_);
+  if (job.id != latestJob_) return;
+  status_.running = false;
+  status_.fraction = 0.0;
+  status_.stage.clear();
+  status_.error.clear();
+}
+
+std::optional<SceneController::Phase2> SceneController::runPhase1(const Job& job) {
   try {
-    // Phase 1: display
+    ProgressReporter progress = progressFor(job);
     std::optional<SceneBuildPhase1> phase1 =
         buildSceneGeometry(job.source, job.settings, job.id, &progress);
-    if (!phase1 || cancelled()) return abandon();
-    bool early = false;
-    {
-      std::unique_lock lock(mutex_);
-      if (cancelled()) {
-        lock.unlock();
-        return abandon();
-      }
-      early = !simulationExists_;
-      if (early) {  // nothing runs: show the rest shape now
-        newGeometry_ = phase1->geometry;
-        currentScene_ = job.id;
-        currentSource_ = job.source;
-        currentSettings_ = job.settings;
-        SceneFrame rest = restFrame(*phase1->geometry, job.settings.material);
-        publishLocked(rest);
-      }
+    if (!phase1 || cancelled(job)) {
+      abandon(job);
+      return std::nullopt;
     }
+    std::unique_lock lock(mutex_);
+    if (cancelled(job)) {
+      lock.unlock();
+      abandon(job);
+      return std::nullopt;
+    }
+    Phase2 next{job, std::move(*phase1), !simulationExists_};
+    if (next.early) {  // nothing runs: show the rest shape now
+      newGeometry_ = next.phase1.geometry;
+      currentScene_ = job.id;
+      currentSource_ = job.source;
+      currentSettings_ = job.settings;
+      SceneFrame rest = restFrame(*next.phase1.geometry, job.settings.material);
+      publishLocked(rest);
+    }
+    return next;
+  } catch (const std::exception& e) {
+    const std::lock_guard lock(mutex_);
+    finishJob(job, e.what(), nullptr);
+    return std::nullopt;
+  }
+}
 
-    // Phase 2: physics
-    StageTimes times = phase1->geometry->stageMs;
-    std::unique_ptr<ScenePhysics> physics =
-        ScenePhysics::build(phase1->geometry, phase1->solid, job.settings, &progress, &times);
-    if (!physics || cancelled()) return abandon();
+void SceneController::runPhase2(const Phase2& work) {
+  const Job& job = work.job;
+  if (cancelled(job)) return abandon(job);
+  try {
+    ProgressReporter progress = progressFor(job);
+    StageTimes times = work.phase1.geometry->stageMs;
+    std::unique_ptr<ScenePhysics> physics = ScenePhysics::build(
+        work.phase1.geometry, work.phase1.solid, job.settings, &progress, &times);
+    if (!physics || cancelled(job)) return abandon(job);
     SceneFrame frame;
     physics->fillFrame(frame);
-    std::unique_ptr<ScenePhysics> replaced;
+    std::unique_ptr<ScenePhysics> replaced;  // freed after the lock
     {
       std::unique_lock lock(mutex_);
-      if (cancelled()) {
+      if (cancelled(job)) {
         lock.unlock();
-        return abandon();
+        return abandon(job);
       }
-      if (!early) newGeometry_ = phase1->geometry;
+      if (!work.early) newGeometry_ = work.phase1.geometry;
       currentScene_ = job.id;
       currentSource_ = job.source;
       currentSettings_ = job.settings;
@@ -280,7 +310,7 @@ void SceneController::builderLoop() {
       pendingJob_.reset();
       runningJob_ = job;
     }
-    runJob(job);
+    if (std::optional<Phase2> work = runPhase1(job)) runPhase2(*work);
     const std::lock_guard lock(mutex_);
     runningJob_.reset();
   }

@@ -85,8 +85,11 @@ class SceneController {
   SceneSource source() const;
 
   /// Non-threaded mode only (a no-op otherwise): runs a queued build to completion, then one
-  /// simulation iteration (queued settings, reset, a step if playing or asked for).
-  void advance();
+  /// simulation iteration (queued settings, reset, a step if playing or asked for). With
+  /// `displayFirst`, a build whose geometry is handed over early (nothing simulates yet) stops
+  /// after phase 1 and the next advance() runs phase 2: a headless first frame then comes as
+  /// early as a windowed one.
+  void advance(bool displayFirst = false);
 
  private:
   struct Job {
@@ -95,8 +98,17 @@ class SceneController {
     SceneSettings settings;
     std::shared_ptr<std::atomic<bool>> cancel;
   };
+  struct Phase2 {  // a build between its phases
+    Job job;
+    SceneBuildPhase1 phase1;
+    bool early = false;  // its geometry was handed over after phase 1
+  };
   const Job* jobInFlightLocked() const;
-  void runJob(const Job& job);
+  ProgressReporter progressFor(const Job& job);
+  bool cancelled(const Job& job) const;
+  void abandon(const Job& job);
+  std::optional<Phase2> runPhase1(const Job& job);  // nullopt: failed or cancelled
+  void runPhase2(const Phase2& work);
   void finishJob(const Job& job, const std::string& error, const StageTimes* times);
   void publishLocked(SceneFrame& frame);  // swaps `frame` in as the latest; mutex_ held
   bool simulationIteration();             // returns whether it published
@@ -133,6 +145,7 @@ class SceneController {
   std::unique_ptr<ScenePhysics> physics_;
   uint64_t appliedLiveVersion_ = 0;
   SceneFrame back_;
+  std::optional<Phase2> deferred_;  // non-threaded: phase 2 left for the next advance()
 
   std::thread builder_, simulation_;  // last: they start after everything they use exists
 };

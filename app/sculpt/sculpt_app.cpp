@@ -63,6 +63,7 @@ SculptApp::SculptApp(GLFWwindow* window, const Options& options, Clock::time_poi
   if (options.level) model_.settings.level = *options.level;
   model_.sceneFile = options.scene;
   model_.showPanels = !options.noUi;
+  model_.showHelp = options.showHelp;
   model_.screenshot.supersample = options.supersample;
   model_.screenshot.transparent = options.transparent;
 
@@ -76,6 +77,14 @@ SculptApp::SculptApp(GLFWwindow* window, const Options& options, Clock::time_poi
   glfwGetWindowContentScale(window_, &sx, &sy);
   model_.uiScale = uiScale(sx, sy, options.uiScale);
   applyUiScale();
+  // Moving the window to a monitor of another scale re-scales the UI (unless --ui-scale is given).
+  glfwSetWindowUserPointer(window_, this);
+  glfwSetWindowContentScaleCallback(window_, [](GLFWwindow* w, float x, float y) {
+    auto* app = static_cast<SculptApp*>(glfwGetWindowUserPointer(w));
+    if (app->options_.uiScale > 0.0f) return;
+    app->model_.uiScale = uiScale(x, y, 0.0f);
+    app->model_.requests.uiScaleChanged = true;
+  });
 
   controller_->load(sourceFor(options.scene), model_.settings);
   lastFrameTime_ = rateWindowStart_ = Clock::now();
