@@ -4,7 +4,7 @@
 // rest shape. Phase 2 (scene_physics.h) makes the solid simulate; scene_controller.h runs both.
 //
 // Scene sources:
-//  - DefaultBunny: assets/bunny.obj Loop-refined twice onto its limit surface (about 59k
+//  - DefaultBunny: assets/bunny.obj Loop-refined three times onto its limit surface (about 235k
 //    triangles) in a hexahedral cage (surface_cage.h) of about cageCellsAcross cells along its
 //    longest side.
 //  - ImportedSurface: an OBJ or glTF surface displayed as is (polygons fanned into triangles) in

@@ -71,7 +71,7 @@ class SculptApp {
   float lastCursorX_ = 0.0f, lastCursorY_ = 0.0f;
   bool cameraFramed_ = false;
   bool firstFrameReported_ = false;
-  double firstFrameSeconds_ = 0.0;
+  double firstFrameSeconds_ = 0.0, windowReadySeconds_ = 0.0;
   SceneFrame latest_;
   render::GpuTimer deformTimer_;
   std::chrono::steady_clock::time_point lastFrameTime_;

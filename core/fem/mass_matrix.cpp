@@ -97,6 +97,7 @@ SparseMatrix assembleNodeMatrix(const FemMesh& mesh, MassField field) {
   // Element matrices N^T diag(field * V) N, added in place (repeated nodes of pyramid apices
   // add up like any shared node).
   Eigen::VectorXd weights;
+  std::vector<uint32_t> order;
   for (uint32_t e = 0; e < numElements; ++e) {
     const uint32_t g0 = mesh.gaussBegin(e), count = mesh.gaussCount(e);
     weights.resize(count);
@@ -109,12 +110,16 @@ SparseMatrix assembleNodeMatrix(const FemMesh& mesh, MassField field) {
                                    ? tricubicN
                                    : (mesh.elementType[e] == ElementType::Pyramid ? pyramidN : hexN);
     const Eigen::MatrixXd Me = N.transpose() * weights.asDiagonal() * N;
+    // The element's nodes in increasing id order, so that each column's entries are found by
+    // one merge-like walk along the column instead of a binary search per entry.
     const std::span<const uint32_t> ids = elementNodes(e);
+    order.resize(ids.size());
+    for (size_t a = 0; a < ids.size(); ++a) order[a] = static_cast<uint32_t>(a);
+    std::sort(order.begin(), order.end(), [&](uint32_t x, uint32_t y) { return ids[x] < ids[y]; });
     for (Eigen::Index b = 0; b < Me.cols(); ++b) {
-      const int* begin = inner + outer[ids[b]];
-      const int* end = inner + outer[ids[b] + 1];
-      for (Eigen::Index a = 0; a < Me.rows(); ++a) {
-        const int* at = std::lower_bound(begin, end, static_cast<int>(ids[a]));
+      const int* at = inner + outer[ids[b]];
+      for (const uint32_t a : order) {
+        while (*at < static_cast<int>(ids[a])) ++at;  // the pattern holds every element node
         values[at - inner] += Me(a, b);
       }
     }

@@ -110,8 +110,9 @@ TEST(SceneController, DefaultBunnyBuildsHangsAndKeepsItsPins) {
   printStages("default scene, phase 1", g->stageMs);
   printStages("default scene, both phases", status.stageMs);
 
-  // Loop level 2 of the 3674-triangle bunny: 16 x 3674 triangles, one embedded point per vertex.
-  EXPECT_EQ(g->triangles.size(), 3u * 16u * 3674u);
+  // Loop level 3 of the 3674-triangle bunny: 64 x 3674 triangles (the "about 200k"), one
+  // embedded point per vertex.
+  EXPECT_EQ(g->triangles.size(), 3u * 64u * 3674u);
   EXPECT_EQ(g->restPositions.rows(), g->restNormals.rows());
   EXPECT_EQ(g->embedding.numPoints(), static_cast<uint32_t>(g->restPositions.rows()));
   // The cage's margin keeps the level-1 solid around the whole surface.
