@@ -187,6 +187,12 @@ void SceneController::advance(bool displayFirst) {
 void SceneController::publishLocked(SceneFrame& frame) {
   frame.version = ++version_;
   std::swap(published_, frame);
+  if (notifier_) notifier_();
+}
+
+void SceneController::setChangeNotifier(std::function<void()> notifier) {
+  const std::lock_guard lock(mutex_);
+  notifier_ = std::move(notifier);
 }
 
 void SceneController::finishJob(const Job& job, const std::string& error, const StageTimes* times) {
@@ -197,6 +203,7 @@ void SceneController::finishJob(const Job& job, const std::string& error, const 
   status_.stage = error.empty() ? "ready" : "failed";
   status_.error = error;
   if (times) status_.stageMs = *times;
+  if (notifier_) notifier_();
 }
 
 ProgressReporter SceneController::progressFor(const Job& job) {

@@ -22,6 +22,7 @@
 #include <atomic>
 #include <condition_variable>
 #include <cstdint>
+#include <functional>
 #include <memory>
 #include <mutex>
 #include <optional>
@@ -62,6 +63,11 @@ class SceneController {
   /// Observes the build's progress on the building thread (fraction, stage); returning false
   /// cancels the build like cancelBuild(). For headless progress output and tests.
   void setProgressObserver(ProgressCallback observer);
+
+  /// Called (on the publishing thread, under the controller's lock: keep it short and do not call
+  /// back into the controller) whenever a frame is published or a build finishes; the window
+  /// wakes its event loop with it (glfwPostEmptyEvent).
+  void setChangeNotifier(std::function<void()> notifier);
 
   /// The geometry of a newly built scene, once (null otherwise). Take it before fetchNewer():
   /// frames published after it belong to it (SceneFrame::sceneId).
@@ -126,6 +132,7 @@ class SceneController {
   uint64_t latestJob_ = 0;
   BuildStatus status_;
   ProgressCallback observer_;
+  std::function<void()> notifier_;
   // Hand-over and frames (under mutex_)
   std::shared_ptr<const SceneGeometry> newGeometry_;
   std::unique_ptr<ScenePhysics> readyPhysics_;

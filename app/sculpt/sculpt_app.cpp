@@ -6,6 +6,7 @@
 
 #include <algorithm>
 #include <cmath>
+#include <cstdio>
 #include <ctime>
 #include <filesystem>
 #include <iostream>
@@ -86,6 +87,7 @@ SculptApp::SculptApp(GLFWwindow* window, const Options& options, Clock::time_poi
     app->model_.requests.uiScaleChanged = true;
   });
 
+  if (!options.headless) controller_->setChangeNotifier([] { glfwPostEmptyEvent(); });
   controller_->load(sourceFor(options.scene), model_.settings);
   lastFrameTime_ = rateWindowStart_ = Clock::now();
   windowReadySeconds_ = secondsSince(started_);
@@ -131,6 +133,7 @@ void SculptApp::syncScene() {
   // shape as soon as the display data exist, like the window, and the physics follows.
   controller_->advance(!view_.hasGeometry());
   if (std::shared_ptr<const SceneGeometry> geometry = controller_->takeNewGeometry()) {
+    sceneChanged_ = true;
     view_.setGeometry(geometry);
     model_.status.description = geometry->description;
     model_.status.elementCounts = geometry->elementCounts;
@@ -142,10 +145,16 @@ void SculptApp::syncScene() {
     }
   }
   if (controller_->fetchNewer(latest_)) {
+    sceneChanged_ = true;
     view_.setFrame(latest_, model_.display);
     model_.status.simulationMs = latest_.stepMs;
     model_.status.simulatedTime = latest_.simulatedTime;
     model_.status.physicsReady = latest_.physicsReady;
+    if (latest_.physicsReady && !physicsReported_) {
+      physicsReported_ = true;
+      std::printf("simulation running after %.2f s\n", secondsSince(started_));
+      std::fflush(stdout);
+    }
     model_.status.uploadBytes = view_.lastUploadBytes();
     model_.status.uploadMs = view_.lastUploadMs();
     if (!latest_.lastStep.message.empty() && latest_.lastStep.message != model_.status.lastStepMessage)
@@ -214,6 +223,7 @@ void SculptApp::handleInput(const ViewRect& view) {
   const int width = std::max(1, static_cast<int>(view.max.x - view.min.x));
   const int height = std::max(1, static_cast<int>(view.max.y - view.min.y));
   const PointerResult result = navigator_.update(input, camera_, width, height);
+  if (result.cameraChanged || result.gesture != Gesture::None) sceneChanged_ = true;
   if (result.setPivotRequested && !io.WantCaptureMouse) {
     if (const std::optional<glm::vec3> pivot =
             camera_.unproject(input.x, input.y, cursorDepth_, width, height))
@@ -223,6 +233,9 @@ void SculptApp::handleInput(const ViewRect& view) {
 
 void SculptApp::carryOutRequests() {
   Requests r = std::exchange(model_.requests, Requests{});
+  if (r.screenshot || r.frameModel || r.frameAll || r.standardView || r.toggleOrthographic ||
+      r.togglePlay || r.stepOnce || r.reset || r.applySettings || !r.loadScene.empty())
+    sceneChanged_ = true;
   if (r.quit) glfwSetWindowShouldClose(window_, 1);
   if (r.frameModel) frameModel(false);
   if (r.frameAll) frameModel(true);
@@ -385,10 +398,21 @@ void SculptApp::writeScreenshot(const std::string& path, const ScreenshotSetting
 
 int SculptApp::runWindow() {
   const auto started = Clock::now();
+  // Frames are drawn while something changes (a new simulation state, input, a build) and a few
+  // more after it (ImGui settles hover states); otherwise the loop sleeps until an event or a
+  // short timeout, so that an idle window leaves the CPU to the builder and the simulation.
+  int busyFrames = 3;
   while (!glfwWindowShouldClose(window_)) {
     if (options_.quitAfter > 0.0 && secondsSince(started) > options_.quitAfter)
       glfwSetWindowShouldClose(window_, 1);
-    glfwPollEvents();
+    if (busyFrames > 0) {
+      glfwPollEvents();
+    } else {
+      const double timeout = 0.25;
+      const double before = glfwGetTime();
+      glfwWaitEventsTimeout(timeout);
+      if (glfwGetTime() - before < 0.9 * timeout) busyFrames = 3;  // woken by an event
+    }
     int width = 0, height = 0;
     glfwGetFramebufferSize(window_, &width, &height);
     if (width <= 0 || height <= 0) {  // minimised
@@ -396,8 +420,10 @@ int SculptApp::runWindow() {
       continue;
     }
     glBindFramebuffer(GL_FRAMEBUFFER, 0);
+    sceneChanged_ = false;
     frame(width, height, true);
     glfwSwapBuffers(window_);
+    busyFrames = sceneChanged_ || !model_.toasts.empty() ? 3 : busyFrames - 1;
   }
   return 0;
 }

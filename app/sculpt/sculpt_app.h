@@ -70,7 +70,8 @@ class SculptApp {
   float cursorDepth_ = 1.0f;  ///< depth under the cursor in the last drawn frame
   float lastCursorX_ = 0.0f, lastCursorY_ = 0.0f;
   bool cameraFramed_ = false;
-  bool firstFrameReported_ = false;
+  bool firstFrameReported_ = false, physicsReported_ = false;
+  bool sceneChanged_ = false;  ///< this frame showed something new (the window loop keeps drawing)
   double firstFrameSeconds_ = 0.0, windowReadySeconds_ = 0.0;
   SceneFrame latest_;
   render::GpuTimer deformTimer_;
