@@ -1,5 +1,6 @@
 #include "sculpt/colour_bar.h"
 
+#include <algorithm>
 #include <cmath>
 #include <cstdio>
 #include <string>
@@ -21,8 +22,21 @@ std::string formatValue(double value) {
 void drawColourBar(FieldKind field, FieldRange range, ImVec2 viewMin, ImVec2 viewMax) {
   if (field == FieldKind::None) return;
   const float scale = ImGui::GetFontSize() / 13.0f;
+  const std::string unit(fieldUnit(field));
+  const std::string title(fieldLabel(field));
+  const double values[3] = {range.high, 0.5 * (range.low + range.high), range.low};
+  std::string labels[3];
+  float labelWidth = 0.0f;
+  for (int k = 0; k < 3; ++k) {
+    labels[k] = formatValue(values[k]) + " " + unit;
+    labelWidth = std::max(labelWidth, ImGui::CalcTextSize(labels[k].c_str()).x);
+  }
   const ImVec2 barSize(18.0f * scale, std::min(220.0f * scale, 0.5f * (viewMax.y - viewMin.y)));
-  const ImVec2 windowSize(barSize.x + 110.0f * scale, barSize.y + 2.0f * ImGui::GetFrameHeight() + 12.0f * scale);
+  const ImVec2 padding = ImGui::GetStyle().WindowPadding;
+  const float contentWidth =
+      std::max(ImGui::CalcTextSize(title.c_str()).x, barSize.x + 6.0f * scale + labelWidth);
+  const ImVec2 windowSize(contentWidth + 2.0f * padding.x,
+                          barSize.y + ImGui::GetFrameHeight() + 2.0f * padding.y + 8.0f * scale);
   ImGui::SetNextWindowPos(ImVec2(viewMax.x - windowSize.x - 12.0f * scale,
                                  viewMax.y - windowSize.y - 12.0f * scale));
   ImGui::SetNextWindowSize(windowSize);
@@ -31,8 +45,7 @@ void drawColourBar(FieldKind field, FieldRange range, ImVec2 viewMin, ImVec2 vie
                ImGuiWindowFlags_NoDecoration | ImGuiWindowFlags_NoMove |
                    ImGuiWindowFlags_NoSavedSettings | ImGuiWindowFlags_NoFocusOnAppearing |
                    ImGuiWindowFlags_NoNav);
-  const std::string unit(fieldUnit(field));
-  ImGui::Text("%s", std::string(fieldLabel(field)).c_str());
+  ImGui::TextUnformatted(title.c_str());
   ImDrawList* draw = ImGui::GetWindowDrawList();
   const ImVec2 top = ImGui::GetCursorScreenPos();
   // High values at the top: the bar is drawn in slices, each a vertical gradient.
@@ -50,11 +63,9 @@ void drawColourBar(FieldKind field, FieldRange range, ImVec2 viewMin, ImVec2 vie
   draw->AddRect(top, ImVec2(top.x + barSize.x, top.y + barSize.y), IM_COL32(230, 230, 230, 200));
   const float labelX = top.x + barSize.x + 6.0f * scale;
   const float lineHeight = ImGui::GetTextLineHeight();
-  const double values[3] = {range.high, 0.5 * (range.low + range.high), range.low};
   for (int k = 0; k < 3; ++k) {
     const float y = top.y + barSize.y * 0.5f * static_cast<float>(k) - 0.5f * lineHeight;
-    const std::string label = formatValue(values[k]) + " " + unit;
-    draw->AddText(ImVec2(labelX, y), IM_COL32(235, 235, 235, 255), label.c_str());
+    draw->AddText(ImVec2(labelX, y), IM_COL32(235, 235, 235, 255), labels[k].c_str());
   }
   ImGui::Dummy(barSize);
   ImGui::End();

@@ -135,7 +135,7 @@ TEST_F(HeadlessWindow, PanelsAndColourBarWhenAFieldIsShown) {
   EXPECT_FALSE(isBackground(field.at(60, 400)));
   EXPECT_FALSE(isBackground(field.at(1200, 700)));
   // The legend sits in the 3D view's lower right corner: x in [820, 960), y in [450, 775).
-  const int x0 = 800, x1 = 960, y0 = 420, y1 = 775;
+  const int x0 = 760, x1 = 960, y0 = 420, y1 = 775;
   const int highWith = colourMapPixels(field, 1.0f, x0, y0, x1, y1, 6);
   const int lowWith = colourMapPixels(field, 0.0f, x0, y0, x1, y1, 6);
   const int highWithout = colourMapPixels(plain, 1.0f, x0, y0, x1, y1, 6);
