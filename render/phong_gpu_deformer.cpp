@@ -15,7 +15,10 @@
 namespace sculpt::render {
 namespace {
 
-constexpr std::array<const char*, 2> kFeedback = {"deformedPosition", "deformedNormal"};
+constexpr size_t kFloatsPerNode = 12;  ///< offset x_i - H_i X_i and H_i, in 3 RGBA texels
+
+constexpr std::array<const char*, 3> kFeedback = {"deformedPosition", "deformedNormal", "fieldValue"};
+constexpr size_t kFeedbackFloats = 7;  ///< per vertex: position, normal, field value
 
 /// The surface fragment shader: lighting and the colour map prepended.
 std::string surfaceFragmentSource() {
@@ -56,7 +59,7 @@ PhongGpuDeformer::PhongGpuDeformer(const VolumeMesh& rest, std::span<const uint3
                                    std::span<const float> local,
                                    std::span<const float> restNormals)
     : program_("phong_deform", shaders::kPhongDeformVert, nullptr, kFeedback),
-      drawProgram_("phong_surface", shaders::kPhongDeformVert, surfaceFragmentSource().c_str()),
+      drawProgram_("phong_surface", shaders::kDeformedSurfaceVert, surfaceFragmentSource().c_str()),
       numVertices_(static_cast<uint32_t>(cells.size())),
       numCells_(rest.numCells()),
       restNodes_(rest.positions) {
@@ -78,7 +81,13 @@ PhongGpuDeformer::PhongGpuDeformer(const VolumeMesh& rest, std::span<const uint3
   makeBufferTexture(restNodesBuffer_, restNodesTexture_, GL_RGBA32F, restNodes.data(),
                     restNodes.size() * sizeof(float), GL_STATIC_DRAW);
   makeBufferTexture(frameBuffer_, frameTexture_, GL_RGBA32F, nullptr,
-                    16 * sizeof(float) * rest.numNodes(), GL_STREAM_DRAW);
+                    kFloatsPerNode * sizeof(float) * rest.numNodes(), GL_STREAM_DRAW);
+  // Per vertex by gl_VertexID: the cell (cell fields) and the attribute neighbours (none yet).
+  makeBufferTexture(cellBuffer_, cellTexture_, GL_R32I, cells.data(), cells.size_bytes(),
+                    GL_STATIC_DRAW);
+  const std::vector<int32_t> noNeighbours(2 * static_cast<size_t>(numVertices_), 0);
+  makeBufferTexture(neighbourRangeBuffer_, neighbourRangeTexture_, GL_RG32I, noNeighbours.data(),
+                    noNeighbours.size() * sizeof(int32_t), GL_STATIC_DRAW);
   // Until a field or the attribute neighbours arrive: zero cell values, one dummy neighbour.
   const std::vector<float> zeros(std::max<size_t>(numCells_, 1), 0.0f);
   makeBufferTexture(cellFieldBuffer_, cellFieldTexture_, GL_R32F, zeros.data(),
@@ -91,9 +100,6 @@ PhongGpuDeformer::PhongGpuDeformer(const VolumeMesh& rest, std::span<const uint3
 
   glGenVertexArrays(1, &vao_);
   glBindVertexArray(vao_);
-  cellBuffer_ = makeVertexBuffer(cells.data(), cells.size_bytes());
-  glEnableVertexAttribArray(0);
-  glVertexAttribIPointer(0, 1, GL_INT, 0, nullptr);
   localBuffer_ = makeVertexBuffer(local.data(), local.size_bytes());
   glEnableVertexAttribArray(1);
   glVertexAttribPointer(1, 3, GL_FLOAT, GL_FALSE, 0, nullptr);
@@ -134,19 +140,29 @@ PhongGpuDeformer::PhongGpuDeformer(const VolumeMesh& rest, std::span<const uint3
     glVertexAttribIPointer(static_cast<GLuint>(8 + half), 4, GL_INT, 8 * sizeof(int32_t),
                            reinterpret_cast<const void*>(4 * sizeof(int32_t) * static_cast<size_t>(half)));
   }
-  const std::vector<int32_t> noNeighbours(2 * static_cast<size_t>(numVertices_), 0);
-  neighbourRangeBuffer_ = makeVertexBuffer(noNeighbours.data(), noNeighbours.size() * sizeof(int32_t));
-  glEnableVertexAttribArray(3);
-  glVertexAttribIPointer(3, 2, GL_INT, 0, nullptr);
-  glGenBuffers(1, &indexBuffer_);
-  glBindBuffer(GL_ELEMENT_ARRAY_BUFFER, indexBuffer_);
   glBindVertexArray(0);
 
+  // The deformed vertices (transform feedback output) are the draw pass's vertex buffer.
   glGenBuffers(1, &feedbackBuffer_);
   glBindBuffer(GL_TRANSFORM_FEEDBACK_BUFFER, feedbackBuffer_);
   glBufferData(GL_TRANSFORM_FEEDBACK_BUFFER,
-               static_cast<GLsizeiptr>(6 * sizeof(float) * numVertices_), nullptr, GL_STREAM_READ);
+               static_cast<GLsizeiptr>(kFeedbackFloats * sizeof(float) * numVertices_), nullptr,
+               GL_DYNAMIC_COPY);
   glBindBuffer(GL_TRANSFORM_FEEDBACK_BUFFER, 0);
+  glGenVertexArrays(1, &drawVao_);
+  glBindVertexArray(drawVao_);
+  glBindBuffer(GL_ARRAY_BUFFER, feedbackBuffer_);
+  constexpr GLsizei stride = kFeedbackFloats * sizeof(float);
+  glEnableVertexAttribArray(0);
+  glVertexAttribPointer(0, 3, GL_FLOAT, GL_FALSE, stride, nullptr);
+  glEnableVertexAttribArray(1);
+  glVertexAttribPointer(1, 3, GL_FLOAT, GL_FALSE, stride, reinterpret_cast<const void*>(3 * sizeof(float)));
+  glEnableVertexAttribArray(2);
+  glVertexAttribPointer(2, 1, GL_FLOAT, GL_FALSE, stride, reinterpret_cast<const void*>(6 * sizeof(float)));
+  glGenBuffers(1, &indexBuffer_);
+  glBindBuffer(GL_ELEMENT_ARRAY_BUFFER, indexBuffer_);
+  glBindVertexArray(0);
+  glBindBuffer(GL_ARRAY_BUFFER, 0);
 }
 
 PhongGpuDeformer::~PhongGpuDeformer() {
@@ -156,10 +172,13 @@ PhongGpuDeformer::~PhongGpuDeformer() {
                             attributeNodesBuffer_, attributeWeightsBuffer_, cellFieldBuffer_,
                             restPointBuffer_,      inverseJacobianBuffer_, vertexNodesBuffer_};
   glDeleteBuffers(static_cast<GLsizei>(std::size(buffers)), buffers);
-  const GLuint textures[] = {restNodesTexture_, frameTexture_,
-                             attributeNodesTexture_, attributeWeightsTexture_, cellFieldTexture_};
+  const GLuint textures[] = {restNodesTexture_,      frameTexture_,
+                             attributeNodesTexture_,  attributeWeightsTexture_,
+                             cellFieldTexture_,       cellTexture_,
+                             neighbourRangeTexture_};
   glDeleteTextures(static_cast<GLsizei>(std::size(textures)), textures);
   glDeleteVertexArrays(1, &vao_);
+  glDeleteVertexArrays(1, &drawVao_);
 }
 
 void PhongGpuDeformer::setFrame(
@@ -173,19 +192,20 @@ void PhongGpuDeformer::setFrame(
   if (nodes.rows() != restNodes_.rows())
     throw std::invalid_argument("PhongGpuDeformer: " + std::to_string(nodes.rows()) +
                                 " node positions for " + std::to_string(restNodes_.rows()) + " nodes");
-  // 4 texels per node: x_i - H_i X_i, then the three rows of H_i = alpha F_i (H_i = 0 when
-  // gradients are not given).
-  std::vector<float> data(16 * static_cast<size_t>(nodes.rows()), 0.0f);
+  // 3 texels per node: x_i - H_i X_i, then H_i = alpha F_i row by row (H_i = 0 when gradients
+  // are not given).
+  std::vector<float> data(kFloatsPerNode * static_cast<size_t>(nodes.rows()), 0.0f);
   for (Eigen::Index i = 0; i < nodes.rows(); ++i) {
-    float* node = data.data() + 16 * i;
+    float* node = data.data() + kFloatsPerNode * static_cast<size_t>(i);
     Eigen::Matrix3d H = Eigen::Matrix3d::Zero();
     if (static_cast<size_t>(i) < gradients.size()) H = alpha_ * gradients[static_cast<size_t>(i)];
     const Eigen::Vector3d offset = nodes.row(i).transpose() - H * restNodes_.row(i).transpose();
     for (int d = 0; d < 3; ++d) node[d] = static_cast<float>(offset(d));
     for (int r = 0; r < 3; ++r)
-      for (int c = 0; c < 3; ++c) node[4 * (r + 1) + c] = static_cast<float>(H(r, c));
+      for (int c = 0; c < 3; ++c) node[3 + 3 * r + c] = static_cast<float>(H(r, c));
   }
   frameUploadBytes_ = data.size() * sizeof(float);
+  feedbackCurrent_ = false;
   uploadBuffer(frameBuffer_, data.data(), frameUploadBytes_, GL_STREAM_DRAW);
 }
 
@@ -208,14 +228,12 @@ void PhongGpuDeformer::setAttributeNeighbours(const CompressedRows<NodeWeight>& 
     weights.push_back(static_cast<float>(w.weight));
   }
   if (nodes.empty()) nodes.push_back(0), weights.push_back(0.0f);  // keep the buffers non-empty
-  glBindBuffer(GL_ARRAY_BUFFER, neighbourRangeBuffer_);
-  glBufferData(GL_ARRAY_BUFFER, static_cast<GLsizeiptr>(ranges.size() * sizeof(int32_t)),
-               ranges.data(), GL_STATIC_DRAW);
-  glBindBuffer(GL_ARRAY_BUFFER, 0);
+  uploadBuffer(neighbourRangeBuffer_, ranges.data(), ranges.size() * sizeof(int32_t), GL_STATIC_DRAW);
   uploadBuffer(attributeNodesBuffer_, nodes.data(), nodes.size() * sizeof(int32_t), GL_STATIC_DRAW);
   uploadBuffer(attributeWeightsBuffer_, weights.data(), weights.size() * sizeof(float),
                GL_STATIC_DRAW);
   hasAttribute_ = true;
+  feedbackCurrent_ = false;
 }
 
 void PhongGpuDeformer::setCellField(std::span<const float> values) {
@@ -224,15 +242,18 @@ void PhongGpuDeformer::setCellField(std::span<const float> values) {
                                 " cell field values for " + std::to_string(numCells_) + " cells");
   if (values.empty()) return;
   uploadBuffer(cellFieldBuffer_, values.data(), values.size_bytes(), GL_DYNAMIC_DRAW);
+  feedbackCurrent_ = false;
 }
 
 void PhongGpuDeformer::bindFrameTextures(const ShaderProgram& program) const {
   program.use();
-  const GLuint textures[] = {restNodesTexture_, frameTexture_, attributeNodesTexture_,
+  const GLuint textures[] = {restNodesTexture_,       frameTexture_,     cellTexture_,
+                             neighbourRangeTexture_,   attributeNodesTexture_,
                              attributeWeightsTexture_, cellFieldTexture_};
-  const char* samplers[] = {"restNodes", "frameNodes", "attributeNodes", "attributeWeights",
+  const char* samplers[] = {"restNodes",       "frameNodes",     "vertexCells",
+                            "neighbourRanges", "attributeNodes", "attributeWeights",
                             "cellField"};
-  for (int unit = 0; unit < 5; ++unit) {
+  for (int unit = 0; unit < 7; ++unit) {
     glActiveTexture(static_cast<GLenum>(GL_TEXTURE0 + unit));
     glBindTexture(GL_TEXTURE_BUFFER, textures[unit]);
     glUniform1i(program.uniform(samplers[unit]), unit);
@@ -241,29 +262,46 @@ void PhongGpuDeformer::bindFrameTextures(const ShaderProgram& program) const {
   glUniform1i(program.uniform("attributeMethod"), attribute_ ? 1 : 0);
 }
 
-void PhongGpuDeformer::drawTriangles(const ShaderProgram& program, const glm::mat4& modelView,
-                                     const glm::mat4& projection) const {
-  glUniformMatrix4fv(program.uniform("modelView"), 1, GL_FALSE, &modelView[0][0]);
-  glUniformMatrix4fv(program.uniform("projection"), 1, GL_FALSE, &projection[0][0]);
+void PhongGpuDeformer::deform(SurfaceField field) const {
+  if (feedbackCurrent_ && feedbackField_ == field) return;
+  bindFrameTextures(program_);
+  glUniform1i(program_.uniform("fieldMode"), static_cast<int>(field));
   glBindVertexArray(vao_);
+  glEnable(GL_RASTERIZER_DISCARD);
+  glBindBufferBase(GL_TRANSFORM_FEEDBACK_BUFFER, 0, feedbackBuffer_);
+  glBeginTransformFeedback(GL_POINTS);
+  glDrawArrays(GL_POINTS, 0, static_cast<GLsizei>(numVertices_));
+  glEndTransformFeedback();
+  glBindBufferBase(GL_TRANSFORM_FEEDBACK_BUFFER, 0, 0);
+  glDisable(GL_RASTERIZER_DISCARD);
+  glBindVertexArray(0);
+  feedbackCurrent_ = true;
+  feedbackField_ = field;
+}
+
+void PhongGpuDeformer::drawTriangles(const glm::mat4& modelView, const glm::mat4& projection) const {
+  glUniformMatrix4fv(drawProgram_.uniform("modelView"), 1, GL_FALSE, &modelView[0][0]);
+  glUniformMatrix4fv(drawProgram_.uniform("projection"), 1, GL_FALSE, &projection[0][0]);
+  glBindVertexArray(drawVao_);
   glDrawElements(GL_TRIANGLES, indexCount_, GL_UNSIGNED_INT, nullptr);
   glBindVertexArray(0);
 }
 
 void PhongGpuDeformer::setTriangles(std::span<const uint32_t> indices) {
-  indexCount_ = uploadTriangleIndices(vao_, indexBuffer_, indices);
+  indexCount_ = uploadTriangleIndices(drawVao_, indexBuffer_, indices);
 }
 
 void PhongGpuDeformer::draw(const glm::mat4& modelView, const glm::mat4& projection,
                             const SurfaceStyle& style) const {
+  deform(style.field);
   const ShaderProgram& program = drawProgram_;
-  bindFrameTextures(program);
+  program.use();
   glUniform3f(program.uniform("baseColour"), style.colour.x, style.colour.y, style.colour.z);
   glUniform1i(program.uniform("fieldMode"), static_cast<int>(style.field));
   glUniform2f(program.uniform("fieldRange"), style.fieldLow, style.fieldHigh);
   glUniform1i(program.uniform("flatShading"), style.flatShading ? 1 : 0);
   glUniform4f(program.uniform("solidColour"), 0.0f, 0.0f, 0.0f, 0.0f);
-  // Without clipping the plane keeps everything (some drivers clip on written distances anyway).
+  // Without clipping the plane keeps everything (llvmpipe clips on written distances anyway).
   const glm::vec4 plane = style.clip ? style.clipPlane : glm::vec4(0.0f, 0.0f, 0.0f, 1.0f);
   glUniform4f(program.uniform("clipPlane"), plane.x, plane.y, plane.z, plane.w);
   if (style.clip) glEnable(GL_CLIP_DISTANCE0);
@@ -271,33 +309,21 @@ void PhongGpuDeformer::draw(const glm::mat4& modelView, const glm::mat4& project
     glEnable(GL_POLYGON_OFFSET_FILL);
     glPolygonOffset(1.0f, 1.0f);
   }
-  drawTriangles(program, modelView, projection);
+  drawTriangles(modelView, projection);
   if (style.wireframe) {
     glDisable(GL_POLYGON_OFFSET_FILL);
     glUniform4f(program.uniform("solidColour"), style.wireColour.x, style.wireColour.y,
                 style.wireColour.z, 1.0f);
     glPolygonMode(GL_FRONT_AND_BACK, GL_LINE);
-    drawTriangles(program, modelView, projection);
+    drawTriangles(modelView, projection);
     glPolygonMode(GL_FRONT_AND_BACK, GL_FILL);
   }
   if (style.clip) glDisable(GL_CLIP_DISTANCE0);
 }
 
 void PhongGpuDeformer::capture(std::vector<float>& positions, std::vector<float>& normals) const {
-  bindFrameTextures(program_);
-  const float identity[16] = {1, 0, 0, 0, 0, 1, 0, 0, 0, 0, 1, 0, 0, 0, 0, 1};
-  glUniformMatrix4fv(program_.uniform("modelView"), 1, GL_FALSE, identity);
-  glUniformMatrix4fv(program_.uniform("projection"), 1, GL_FALSE, identity);
-  glUniform1i(program_.uniform("fieldMode"), 0);
-  glBindVertexArray(vao_);
-  glEnable(GL_RASTERIZER_DISCARD);
-  glBindBufferBase(GL_TRANSFORM_FEEDBACK_BUFFER, 0, feedbackBuffer_);
-  glBeginTransformFeedback(GL_POINTS);
-  glDrawArrays(GL_POINTS, 0, static_cast<GLsizei>(numVertices_));
-  glEndTransformFeedback();
-  glDisable(GL_RASTERIZER_DISCARD);
-  glBindVertexArray(0);
-  std::vector<float> interleaved(6 * static_cast<size_t>(numVertices_));
+  deform(feedbackCurrent_ ? feedbackField_ : SurfaceField::None);
+  std::vector<float> interleaved(kFeedbackFloats * static_cast<size_t>(numVertices_));
   glBindBuffer(GL_TRANSFORM_FEEDBACK_BUFFER, feedbackBuffer_);
   glGetBufferSubData(GL_TRANSFORM_FEEDBACK_BUFFER, 0,
                      static_cast<GLsizeiptr>(interleaved.size() * sizeof(float)),
@@ -307,8 +333,8 @@ void PhongGpuDeformer::capture(std::vector<float>& positions, std::vector<float>
   normals.resize(3 * static_cast<size_t>(numVertices_));
   for (uint32_t v = 0; v < numVertices_; ++v)
     for (int d = 0; d < 3; ++d) {
-      positions[3 * v + d] = interleaved[6 * v + d];
-      normals[3 * v + d] = interleaved[6 * v + 3 + d];
+      positions[3 * v + d] = interleaved[kFeedbackFloats * v + d];
+      normals[3 * v + d] = interleaved[kFeedbackFloats * v + 3 + d];
     }
 }
 

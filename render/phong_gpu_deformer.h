@@ -1,8 +1,12 @@
 #pragma once
-// Phong Deformation in the vertex shader (shaders/phong_deform.vert): the embedded surface stays
-// on the GPU as static per-vertex cell index, local coordinates and rest normal; each frame
-// uploads only node positions and node gradients (O(nodes)). The CPU deformer of core/embed is
-// the reference: capture() reads the shader's results back through transform feedback.
+// Phong Deformation in a vertex shader (shaders/phong_deform.vert): the embedded surface stays on
+// the GPU as static per-vertex data (local coordinates, rest point, rest normal, inverse rest
+// Jacobian, cell nodes); each frame uploads only node positions and node gradients (O(nodes)).
+// The shader runs once per vertex per new frame with transform feedback into a vertex buffer,
+// which draw() then renders (shaders/deformed_surface.vert): every draw of the same frame (the
+// wireframe pass, screenshots) reuses it, and each vertex is deformed once however many
+// triangles share it. The CPU deformer of core/embed is the reference: capture() reads that
+// buffer back.
 // Methods: linear, vertex and phong from the node gradients; attribute (for comparison) from
 // per-vertex metaball neighbours uploaded once when first needed.
 
@@ -69,19 +73,22 @@ class PhongGpuDeformer {
 
  private:
   void bindFrameTextures(const ShaderProgram& program) const;
-  void drawTriangles(const ShaderProgram& program, const glm::mat4& modelView,
-                     const glm::mat4& projection) const;
+  /// Runs the deformation pass into feedbackBuffer_ unless it holds this frame with this field.
+  void deform(SurfaceField field) const;
+  void drawTriangles(const glm::mat4& modelView, const glm::mat4& projection) const;
 
-  ShaderProgram program_;      ///< transform feedback (capture)
-  ShaderProgram drawProgram_;  ///< the same vertex shader with lighting
+  ShaderProgram program_;      ///< the deformation pass (transform feedback)
+  ShaderProgram drawProgram_;  ///< draws the deformed buffer with lighting
   GLuint indexBuffer_ = 0;
   GLsizei indexCount_ = 0;
-  GLuint vao_ = 0, cellBuffer_ = 0, localBuffer_ = 0, normalBuffer_ = 0;
+  GLuint vao_ = 0, localBuffer_ = 0, normalBuffer_ = 0;
+  GLuint drawVao_ = 0;  ///< the deformed vertices and the triangles
+  GLuint cellBuffer_ = 0, cellTexture_ = 0;  ///< per vertex, read by vertex id
   GLuint restNodesBuffer_ = 0, restNodesTexture_ = 0;
   GLuint frameBuffer_ = 0, frameTexture_ = 0;
   GLuint feedbackBuffer_ = 0;
   GLuint restPointBuffer_ = 0, inverseJacobianBuffer_ = 0, vertexNodesBuffer_ = 0;
-  GLuint neighbourRangeBuffer_ = 0;  ///< per vertex (first, count) of the attribute method
+  GLuint neighbourRangeBuffer_ = 0, neighbourRangeTexture_ = 0;  ///< per vertex (first, count) of the attribute method
   GLuint attributeNodesBuffer_ = 0, attributeNodesTexture_ = 0;
   GLuint attributeWeightsBuffer_ = 0, attributeWeightsTexture_ = 0;
   GLuint cellFieldBuffer_ = 0, cellFieldTexture_ = 0;
@@ -90,6 +97,8 @@ class PhongGpuDeformer {
   float alpha_ = 0.5f;
   bool attribute_ = false, hasAttribute_ = false;
   size_t frameUploadBytes_ = 0;
+  mutable bool feedbackCurrent_ = false;  ///< feedbackBuffer_ holds the current frame
+  mutable SurfaceField feedbackField_ = SurfaceField::None;
 };
 
 }  // namespace sculpt::render

@@ -5,43 +5,44 @@
 // of grad f times the rest normal). alpha = 0 is linear interpolation, 1/2 Phong, 1 the vertex
 // model. The attribute method (Houdini's Point Deform, for comparison) instead moves the rest
 // point by the weighted node displacements of its precomputed metaball neighbours, and keeps the
-// Phong normal. Also passes a scalar field value to the fragment shader and clips against a plane.
+// Phong normal. Also evaluates the scalar field shown. Runs once per vertex per new frame with
+// transform feedback (render/phong_gpu_deformer.cpp); deformed_surface.vert then draws the result.
 //
-// Cost: what does not change per frame is per-vertex data (rest point X and the inverse rest
-// Jacobian dxi/dX), and the per-frame node data (O(nodes) upload) is x_i - H_i X_i with H_i, so
-// that x_i + H_i (X - X_i) = (x_i - H_i X_i) + H_i X needs no rest node positions here.
+// Cost (vertex processing dominates drawing here): what does not change per frame is per-vertex
+// data (rest point X, inverse rest Jacobian dxi/dX, the cell's nodes); the per-frame node data
+// (O(nodes) upload, 3 texels per node) is x_i - H_i X_i with H_i, so that
+// x_i + H_i (X - X_i) = (x_i - H_i X_i) + H_i X needs no rest node positions. Data that only a
+// field or the attribute method needs is fetched by vertex id when they are on.
 
-layout(location = 0) in int cell;          // cell index
 layout(location = 1) in vec3 local;        // tet: (beta1, beta2, beta3); hex: (s, t, u)
 layout(location = 2) in vec3 restNormal;
-layout(location = 3) in ivec2 neighbours;  // attribute method: first index and count
 layout(location = 4) in vec3 restPoint;    // X
 layout(location = 5) in mat3 restInverseJacobian;  // d xi / d X at X (locations 5, 6, 7)
 layout(location = 8) in ivec4 cellNodesLow;   // the cell's node ids 0..3
 layout(location = 9) in ivec4 cellNodesHigh;  // and 4..7 (-1 for a tetrahedron)
 
 uniform samplerBuffer restNodes;    // rest position X_i per node (attribute method only)
-uniform samplerBuffer frameNodes;   // 4 texels per node: x_i - H_i X_i, then the rows of H_i
+uniform samplerBuffer frameNodes;   // 3 texels per node: (x_i - H_i X_i, H_i row-major)
+uniform isamplerBuffer vertexCells;       // per vertex: its cell (for cell fields)
+uniform isamplerBuffer neighbourRanges;   // per vertex: attribute neighbours (first, count)
 uniform bool attributeMethod;
 uniform isamplerBuffer attributeNodes;    // attribute method: neighbour node ids
 uniform samplerBuffer attributeWeights;   // and their normalised weights
 uniform int fieldMode;                    // 0 none, 1 per cell (cellField), 2 displacement length
 uniform samplerBuffer cellField;
-uniform vec4 clipPlane;                   // kept where dot(xyz, position) <= w
-uniform mat4 modelView;
-uniform mat4 projection;
 
-out vec3 deformedPosition;  // world space, read back by transform feedback
+out vec3 deformedPosition;  // world space, captured by transform feedback
 out vec3 deformedNormal;
-out vec3 viewPosition;      // view space, for lighting (per vertex rather than per fragment)
-out vec3 viewNormal;
 out float fieldValue;
 
-// Rows of H_i from the frame texture (GLSL matrices are built from columns, hence the transpose).
-mat3 nodeGradient(int node) {
-  return transpose(mat3(texelFetch(frameNodes, 4 * node + 1).xyz,
-                        texelFetch(frameNodes, 4 * node + 2).xyz,
-                        texelFetch(frameNodes, 4 * node + 3).xyz));
+// Node i's offset x_i - H_i X_i and H_i from its 3 texels (12 floats).
+void nodeFrame(int node, out vec3 offset, out mat3 H) {
+  vec4 a = texelFetch(frameNodes, 3 * node);
+  vec4 b = texelFetch(frameNodes, 3 * node + 1);
+  vec4 c = texelFetch(frameNodes, 3 * node + 2);
+  offset = a.xyz;
+  // Rows (a.w, b.x, b.y), (b.z, b.w, c.x), (c.y, c.z, c.w); mat3() takes columns.
+  H = mat3(a.w, b.z, c.y, b.x, b.w, c.z, b.y, c.x, c.w);
 }
 
 void main() {
@@ -76,8 +77,10 @@ void main() {
   mat3 dfdxi = mat3(0.0);
   mat3 blended = mat3(0.0);
   for (int a = 0; a < count; ++a) {
-    mat3 Ha = nodeGradient(nodes[a]);
-    vec3 model = texelFetch(frameNodes, 4 * nodes[a]).xyz + Ha * X;
+    vec3 offset;
+    mat3 Ha;
+    nodeFrame(nodes[a], offset, Ha);
+    vec3 model = offset + Ha * X;
     position += beta[a] * model;
     dfdxi += outerProduct(model, dbeta[a]);
     blended += beta[a] * Ha;
@@ -88,19 +91,18 @@ void main() {
   deformedNormal = length(n) > 0.0 ? normalize(n) : restNormal;
   if (attributeMethod) {
     position = X;
+    ivec2 neighbours = texelFetch(neighbourRanges, gl_VertexID).rg;
     for (int k = 0; k < neighbours.y; ++k) {
       int node = texelFetch(attributeNodes, neighbours.x + k).r;
       vec3 restNode = texelFetch(restNodes, node).xyz;
-      vec3 deformedNode = texelFetch(frameNodes, 4 * node).xyz + nodeGradient(node) * restNode;
-      position += texelFetch(attributeWeights, neighbours.x + k).r * (deformedNode - restNode);
+      vec3 offset;
+      mat3 H;
+      nodeFrame(node, offset, H);
+      position += texelFetch(attributeWeights, neighbours.x + k).r * (offset + H * restNode - restNode);
     }
   }
   deformedPosition = position;
-  fieldValue = fieldMode == 1 ? texelFetch(cellField, cell).r
+  fieldValue = fieldMode == 1 ? texelFetch(cellField, texelFetch(vertexCells, gl_VertexID).r).r
                               : (fieldMode == 2 ? length(position - X) : 0.0);
-  gl_ClipDistance[0] = clipPlane.w - dot(clipPlane.xyz, position);
-  vec4 eyePosition = modelView * vec4(position, 1.0);
-  viewPosition = eyePosition.xyz;
-  viewNormal = mat3(modelView) * deformedNormal;
-  gl_Position = projection * eyePosition;
+  gl_Position = vec4(position, 1.0);  // unused: the pass runs with rasterizer discard
 }

@@ -37,7 +37,7 @@ struct Requests {
 
 /// Figures for the status strip.
 struct Status {
-  double frameMs = 0, simulationMs = 0, deformationMs = 0, uploadMs = 0;
+  double frameMs = 0, simulationMs = 0, sceneDrawMs = 0, uploadMs = 0;
   size_t uploadBytes = 0, triangles = 0, nodes = 0;
   std::array<uint32_t, 3> elementCounts{};  ///< tricubic, trilinear, pyramid
   double simulatedTime = 0, stepsPerSecond = 0;

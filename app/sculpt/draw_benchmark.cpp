@@ -26,9 +26,12 @@ double timed(Draw draw) {
 
 }  // namespace
 
-DrawMeasurement measureDrawing(const render::PhongGpuDeformer& deformer,
-                               std::span<const uint32_t> triangles, const glm::mat4& view,
-                               const glm::mat4& projection, int repetitions) {
+DrawMeasurement measureDrawing(render::PhongGpuDeformer& deformer,
+                               const Eigen::Matrix<double, Eigen::Dynamic, 3, Eigen::RowMajor>& nodes,
+                               const std::vector<Eigen::Matrix3d>& gradients,
+                               InterpolationMethod method, std::span<const uint32_t> triangles,
+                               const glm::mat4& view, const glm::mat4& projection, int repetitions) {
+  deformer.setFrame(nodes, gradients, method);
   std::vector<float> positions, normals;
   deformer.capture(positions, normals);
   render::SurfaceRenderer staticSurface;
@@ -37,10 +40,14 @@ DrawMeasurement measureDrawing(const render::PhongGpuDeformer& deformer,
   const render::SurfaceStyle style;
   std::vector<double> deformed, still;
   glEnable(GL_DEPTH_TEST);
-  timed([&] { deformer.draw(view, projection, style); });  // warm up both paths
+  const auto deformAndDraw = [&] {
+    deformer.setFrame(nodes, gradients, method);
+    deformer.draw(view, projection, style);
+  };
+  timed(deformAndDraw);  // warm up both paths
   timed([&] { staticSurface.draw(view, projection, style.colour); });
   for (int k = 0; k < repetitions; ++k) {
-    deformed.push_back(timed([&] { deformer.draw(view, projection, style); }));
+    deformed.push_back(timed(deformAndDraw));
     still.push_back(timed([&] { staticSurface.draw(view, projection, style.colour); }));
   }
   return {median(deformed), median(still)};

@@ -225,9 +225,9 @@ void bottomStrip(AppModel& m, ImVec2 pos, ImVec2 size) {
   if (ImGui::Button("Reset")) r.reset = true;
   ImGui::SameLine();
   const Status& s = m.status;
-  ImGui::Text("t %.2f s | frame %.1f ms | sim %.1f ms/step (%.0f/s) | deform %.2f ms, upload %.0f KiB "
+  ImGui::Text("t %.2f s | frame %.1f ms | sim %.1f ms/step (%.0f/s) | 3D view %.2f ms GPU, upload %.0f KiB "
               "| %zu tris | %u tricubic, %u trilinear, %u pyramid%s",
-              s.simulatedTime, s.frameMs, s.simulationMs, s.stepsPerSecond, s.deformationMs,
+              s.simulatedTime, s.frameMs, s.simulationMs, s.stepsPerSecond, s.sceneDrawMs,
               static_cast<double>(s.uploadBytes) / 1024.0, s.triangles, s.elementCounts[0],
               s.elementCounts[1], s.elementCounts[2], s.physicsReady ? "" : " | preparing physics");
   ImGui::End();

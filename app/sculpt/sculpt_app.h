@@ -74,7 +74,7 @@ class SculptApp {
   bool sceneChanged_ = false;  ///< this frame showed something new (the window loop keeps drawing)
   double firstFrameSeconds_ = 0.0, windowReadySeconds_ = 0.0;
   SceneFrame latest_;
-  render::GpuTimer deformTimer_;
+  render::GpuTimer sceneTimer_;
   std::chrono::steady_clock::time_point lastFrameTime_;
   std::chrono::steady_clock::time_point rateWindowStart_;
   uint64_t rateWindowVersion_ = 0;
