@@ -94,8 +94,8 @@ if [[ -n "${DISPLAY:-}" ]]; then
 elif command -v xvfb-run >/dev/null 2>&1; then
   echo
   echo "no display: rendering the window headless under xvfb-run"
-  xvfb-run -a -s "-screen 0 1280x1024x24" "$SCULPT" --headless --frames 3 --screenshot "$SHOT"
-  echo "  $ROOT/$SHOT   (screenshot of the window's default scene)"
+  xvfb-run -a -s "-screen 0 1280x1024x24" "$SCULPT" --headless --frames 60 --screenshot "$SHOT"
+  echo "  $ROOT/$SHOT   (screenshot of the window: the default scene after 60 simulated frames)"
 else
   echo "no display and no xvfb-run: the window was not started" >&2
 fi

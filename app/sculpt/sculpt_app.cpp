@@ -134,7 +134,10 @@ void SculptApp::syncScene() {
   controller_->advance(!view_.hasGeometry());
   if (std::shared_ptr<const SceneGeometry> geometry = controller_->takeNewGeometry()) {
     sceneChanged_ = true;
+    const auto uploadStart = Clock::now();
     view_.setGeometry(geometry);
+    geometryUploadSeconds_ = secondsSince(uploadStart);
+    geometryArrivedSeconds_ = secondsSince(started_);
     model_.status.description = geometry->description;
     model_.status.elementCounts = geometry->elementCounts;
     model_.status.triangles = view_.numTriangles();
@@ -356,8 +359,10 @@ void SculptApp::reportFirstFrame() {
   firstFrameSeconds_ = secondsSince(started_);
   char text[160];
   std::snprintf(text, sizeof text,
-                "first frame with the scene after %.2f s (window, OpenGL and UI ready after %.2f s)",
-                firstFrameSeconds_, windowReadySeconds_);
+                "first frame with the scene after %.2f s (window, OpenGL and UI ready after %.2f s, "
+                "scene data after %.2f s, GPU upload %.2f s)",
+                firstFrameSeconds_, windowReadySeconds_,
+                geometryArrivedSeconds_ - geometryUploadSeconds_, geometryUploadSeconds_);
   std::cout << text << std::endl;
 }
 

@@ -73,6 +73,7 @@ class SculptApp {
   bool firstFrameReported_ = false, physicsReported_ = false;
   bool sceneChanged_ = false;  ///< this frame showed something new (the window loop keeps drawing)
   double firstFrameSeconds_ = 0.0, windowReadySeconds_ = 0.0;
+  double geometryArrivedSeconds_ = 0.0, geometryUploadSeconds_ = 0.0;
   SceneFrame latest_;
   render::GpuTimer sceneTimer_;
   std::chrono::steady_clock::time_point lastFrameTime_;
