@@ -5,6 +5,7 @@
 
 #include <glm/gtc/type_ptr.hpp>
 
+#include "render/gl_buffers.h"
 #include "shader_sources.h"
 
 namespace sculpt::render {
@@ -44,15 +45,9 @@ LineRenderer::~LineRenderer() {
 
 void LineRenderer::create(Batch& batch) {
   glGenVertexArrays(1, &batch.vao);
-  glGenBuffers(1, &batch.positions);
-  glGenBuffers(1, &batch.colours);
   glBindVertexArray(batch.vao);
-  glBindBuffer(GL_ARRAY_BUFFER, batch.positions);
-  glEnableVertexAttribArray(0);
-  glVertexAttribPointer(0, 3, GL_FLOAT, GL_FALSE, 0, nullptr);
-  glBindBuffer(GL_ARRAY_BUFFER, batch.colours);
-  glEnableVertexAttribArray(1);
-  glVertexAttribPointer(1, 3, GL_FLOAT, GL_FALSE, 0, nullptr);
+  batch.positions = floatAttribute(0, 3);
+  batch.colours = floatAttribute(1, 3);
   glBindVertexArray(0);
   glBindBuffer(GL_ARRAY_BUFFER, 0);
 }

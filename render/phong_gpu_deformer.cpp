@@ -100,12 +100,8 @@ PhongGpuDeformer::PhongGpuDeformer(const VolumeMesh& rest, std::span<const uint3
 
   glGenVertexArrays(1, &vao_);
   glBindVertexArray(vao_);
-  localBuffer_ = makeVertexBuffer(local.data(), local.size_bytes());
-  glEnableVertexAttribArray(1);
-  glVertexAttribPointer(1, 3, GL_FLOAT, GL_FALSE, 0, nullptr);
-  normalBuffer_ = makeVertexBuffer(restNormals.data(), restNormals.size_bytes());
-  glEnableVertexAttribArray(2);
-  glVertexAttribPointer(2, 3, GL_FLOAT, GL_FALSE, 0, nullptr);
+  localBuffer_ = floatAttribute(1, 3, makeVertexBuffer(local.data(), local.size_bytes()));
+  normalBuffer_ = floatAttribute(2, 3, makeVertexBuffer(restNormals.data(), restNormals.size_bytes()));
   // Static per-vertex rest point X and inverse rest Jacobian d xi / d X (columns), so that the
   // shader needs no rest node positions and no matrix inverse.
   std::vector<float> restPoint(3 * static_cast<size_t>(numVertices_));
@@ -118,9 +114,8 @@ PhongGpuDeformer::PhongGpuDeformer(const VolumeMesh& rest, std::span<const uint3
     for (int c = 0; c < 3; ++c)
       for (int r = 0; r < 3; ++r) inverseJacobian[9 * v + 3 * c + r] = static_cast<float>(inverse(r, c));
   }
-  restPointBuffer_ = makeVertexBuffer(restPoint.data(), restPoint.size() * sizeof(float));
-  glEnableVertexAttribArray(4);
-  glVertexAttribPointer(4, 3, GL_FLOAT, GL_FALSE, 0, nullptr);
+  restPointBuffer_ =
+      floatAttribute(4, 3, makeVertexBuffer(restPoint.data(), restPoint.size() * sizeof(float)));
   inverseJacobianBuffer_ =
       makeVertexBuffer(inverseJacobian.data(), inverseJacobian.size() * sizeof(float));
   for (int c = 0; c < 3; ++c) {

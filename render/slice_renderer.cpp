@@ -5,6 +5,7 @@
 
 #include <glm/gtc/type_ptr.hpp>
 
+#include "render/gl_buffers.h"
 #include "shader_sources.h"
 
 namespace sculpt::render {
@@ -41,16 +42,10 @@ SliceRenderer::SliceRenderer()
     : program_("slice", shaders::kSliceVert,
                shaderSource({shaders::kColourMapGlsl}, shaders::kSliceFrag).c_str()) {
   glGenVertexArrays(1, &vao_);
-  glGenBuffers(1, &positionBuffer_);
-  glGenBuffers(1, &valueBuffer_);
   glGenBuffers(1, &indexBuffer_);
   glBindVertexArray(vao_);
-  glBindBuffer(GL_ARRAY_BUFFER, positionBuffer_);
-  glEnableVertexAttribArray(0);
-  glVertexAttribPointer(0, 3, GL_FLOAT, GL_FALSE, 0, nullptr);
-  glBindBuffer(GL_ARRAY_BUFFER, valueBuffer_);
-  glEnableVertexAttribArray(1);
-  glVertexAttribPointer(1, 1, GL_FLOAT, GL_FALSE, 0, nullptr);
+  positionBuffer_ = floatAttribute(0, 3);
+  valueBuffer_ = floatAttribute(1, 1);
   glBindBuffer(GL_ELEMENT_ARRAY_BUFFER, indexBuffer_);
   glBindVertexArray(0);
   glBindBuffer(GL_ARRAY_BUFFER, 0);

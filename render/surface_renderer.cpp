@@ -10,16 +10,10 @@ namespace sculpt::render {
 SurfaceRenderer::SurfaceRenderer()
     : program_("surface", shaders::kSurfaceVert, litFragmentSource(shaders::kSurfaceFrag).c_str()) {
   glGenVertexArrays(1, &vao_);
-  glGenBuffers(1, &positionBuffer_);
-  glGenBuffers(1, &normalBuffer_);
   glGenBuffers(1, &indexBuffer_);
   glBindVertexArray(vao_);
-  glBindBuffer(GL_ARRAY_BUFFER, positionBuffer_);
-  glEnableVertexAttribArray(0);
-  glVertexAttribPointer(0, 3, GL_FLOAT, GL_FALSE, 0, nullptr);
-  glBindBuffer(GL_ARRAY_BUFFER, normalBuffer_);
-  glEnableVertexAttribArray(1);
-  glVertexAttribPointer(1, 3, GL_FLOAT, GL_FALSE, 0, nullptr);
+  positionBuffer_ = floatAttribute(0, 3);
+  normalBuffer_ = floatAttribute(1, 3);
   glBindBuffer(GL_ELEMENT_ARRAY_BUFFER, indexBuffer_);
   glBindVertexArray(0);
 }

@@ -9,9 +9,7 @@
 #include <cstdlib>
 #include <random>
 
-#include "render/gl.h"
-#define GLFW_INCLUDE_NONE
-#include <GLFW/glfw3.h>
+#include "support/gl_context.h"
 
 #include "embed/cell_coordinates.h"
 #include "embed/cell_interpolant.h"
@@ -23,27 +21,7 @@ namespace sculpt {
 namespace {
 
 /// A hidden window with an OpenGL 3.3 core context for the test's lifetime.
-class GpuPhongDeformer : public ::testing::Test {
- protected:
-  void SetUp() override {
-    ASSERT_NE(std::getenv("DISPLAY"), nullptr)
-        << "no X display: run the GUI tests under xvfb-run (scripts/test.sh does)";
-    ASSERT_TRUE(glfwInit());
-    glfwWindowHint(GLFW_CONTEXT_VERSION_MAJOR, 3);
-    glfwWindowHint(GLFW_CONTEXT_VERSION_MINOR, 3);
-    glfwWindowHint(GLFW_OPENGL_PROFILE, GLFW_OPENGL_CORE_PROFILE);
-    glfwWindowHint(GLFW_OPENGL_FORWARD_COMPAT, GLFW_TRUE);
-    glfwWindowHint(GLFW_VISIBLE, GLFW_FALSE);
-    window_ = glfwCreateWindow(64, 64, "gpu deformer test", nullptr, nullptr);
-    ASSERT_NE(window_, nullptr);
-    glfwMakeContextCurrent(window_);
-  }
-  void TearDown() override {
-    if (window_) glfwDestroyWindow(window_);
-    glfwTerminate();
-  }
-  GLFWwindow* window_ = nullptr;
-};
+class GpuPhongDeformer : public testing::GlContextTest {};
 
 Eigen::Vector3d smoothMap(const Eigen::Vector3d& X) {
   return X + 0.15 * Eigen::Vector3d(std::sin(2 * X.y()) + X.z() * X.z(), std::cos(1.5 * X.z()) * X.x(),

@@ -10,22 +10,13 @@
 #include <algorithm>
 
 #include "render/camera.h"
+#include "support/gl_context.h"
 
 namespace sculpt::app {
 namespace {
 
-class HelpOverlay : public ::testing::Test {
+class HelpOverlay : public testing::ImGuiContextTest {
  protected:
-  void SetUp() override {
-    ImGui::CreateContext();
-    ImGuiIO& io = ImGui::GetIO();
-    io.DisplaySize = ImVec2(1280.0f, 800.0f);
-    io.DeltaTime = 1.0f / 60.0f;
-    io.IniFilename = nullptr;
-    io.Fonts->Build();
-  }
-  void TearDown() override { ImGui::DestroyContext(); }
-
   /// Runs a frame with the overlay; returns the bounding box of everything drawn.
   bool frame(NavigationPreset preset, bool* open, ImVec2& lo, ImVec2& hi) {
     ImGui::NewFrame();

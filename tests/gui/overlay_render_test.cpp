@@ -16,9 +16,7 @@
 #include <utility>
 #include <vector>
 
-#include "render/gl.h"
-#define GLFW_INCLUDE_NONE
-#include <GLFW/glfw3.h>
+#include "support/gl_context.h"
 
 #include "mesh/lattice_mesh.h"
 #include "mesh/plane_slice.h"
@@ -32,27 +30,7 @@ namespace sculpt {
 namespace {
 
 /// A hidden window with an OpenGL 3.3 core context for the test's lifetime.
-class OverlayRender : public ::testing::Test {
- protected:
-  void SetUp() override {
-    ASSERT_NE(std::getenv("DISPLAY"), nullptr)
-        << "no X display: run the GUI tests under xvfb-run (scripts/test.sh does)";
-    ASSERT_TRUE(glfwInit());
-    glfwWindowHint(GLFW_CONTEXT_VERSION_MAJOR, 3);
-    glfwWindowHint(GLFW_CONTEXT_VERSION_MINOR, 3);
-    glfwWindowHint(GLFW_OPENGL_PROFILE, GLFW_OPENGL_CORE_PROFILE);
-    glfwWindowHint(GLFW_OPENGL_FORWARD_COMPAT, GLFW_TRUE);
-    glfwWindowHint(GLFW_VISIBLE, GLFW_FALSE);
-    window_ = glfwCreateWindow(64, 64, "overlay render test", nullptr, nullptr);
-    ASSERT_NE(window_, nullptr);
-    glfwMakeContextCurrent(window_);
-  }
-  void TearDown() override {
-    if (window_) glfwDestroyWindow(window_);
-    glfwTerminate();
-  }
-  GLFWwindow* window_ = nullptr;
-};
+class OverlayRender : public testing::GlContextTest {};
 
 /// RGBA8 pixels (top row first) of a target: the pixel at column x, row y.
 struct Image {

@@ -9,22 +9,13 @@
 #include <imgui_internal.h>
 
 #include "sculpt/colour_bar.h"
+#include "support/gl_context.h"
 
 namespace sculpt::app {
 namespace {
 
-class Panels : public ::testing::Test {
+class Panels : public testing::ImGuiContextTest {
  protected:
-  void SetUp() override {
-    ImGui::CreateContext();
-    ImGuiIO& io = ImGui::GetIO();
-    io.DisplaySize = ImVec2(1280.0f, 800.0f);
-    io.DeltaTime = 1.0f / 60.0f;
-    io.IniFilename = nullptr;
-    io.Fonts->Build();
-  }
-  void TearDown() override { ImGui::DestroyContext(); }
-
   ViewRect frame(AppModel& model) {
     ImGui::NewFrame();
     const ViewRect view = drawPanels(model);
