@@ -26,7 +26,8 @@ const char* const kUsage =
     "  --no-ui                headless: the 3D view without panels\n"
     "  --bench N              headless: time N frames and print key=value figures\n"
     "  --size WxH             window size (default 1280x800)\n"
-    "  --quit-after SECONDS   close the window after that long (smoke tests)\n";
+    "  --quit-after SECONDS   close the window that long after the first frame with the scene\n"
+    "                         (smoke tests)\n";
 
 namespace {
 

@@ -402,14 +402,20 @@ void SculptApp::writeScreenshot(const std::string& path, const ScreenshotSetting
 }
 
 int SculptApp::runWindow() {
-  const auto started = Clock::now();
+  // --quit-after counts from the first frame with the scene (or from a failed build), so that a
+  // slow machine or a sanitizer build still shows the scene before closing.
+  std::optional<Clock::time_point> quitClockStart;
   // Frames are drawn while something changes (a new simulation state, input, a build) and a few
   // more after it (ImGui settles hover states); otherwise the loop sleeps until an event or a
   // short timeout, so that an idle window leaves the CPU to the builder and the simulation.
   int busyFrames = 3;
   while (!glfwWindowShouldClose(window_)) {
-    if (options_.quitAfter > 0.0 && secondsSince(started) > options_.quitAfter)
-      glfwSetWindowShouldClose(window_, 1);
+    if (options_.quitAfter > 0.0) {
+      if (!quitClockStart && (firstFrameReported_ || !model_.status.build.error.empty()))
+        quitClockStart = Clock::now();
+      if (quitClockStart && secondsSince(*quitClockStart) > options_.quitAfter)
+        glfwSetWindowShouldClose(window_, 1);
+    }
     if (busyFrames > 0) {
       glfwPollEvents();
     } else {

@@ -180,7 +180,7 @@ TEST_F(HeadlessWindow, ControlMeshSceneBuildsAndSteps) {
 // The interactive window with its builder and simulation threads runs (ImGui, GPU deformation,
 // the worker publishing states) and closes cleanly.
 TEST_F(HeadlessWindow, WindowWithSimulationWorkerRunsAndQuits) {
-  EXPECT_EQ(run("--quit-after 3 --size 800x600"), 0);
+  EXPECT_EQ(run("--quit-after 1 --size 800x600"), 0);
   std::ifstream out(dir_ / "out.txt");
   const std::string text((std::istreambuf_iterator<char>(out)), std::istreambuf_iterator<char>());
   EXPECT_NE(text.find("first frame with the scene after"), std::string::npos) << text;
