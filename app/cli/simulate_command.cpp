@@ -1,11 +1,13 @@
 // sculpt-cli simulate CONTROL [--levels K | --trilinear] [--integrator paper|implicit] --dt S
-// --steps N [--gravity] [--fix BOX]... [--force BOX FX,FY,FZ]... --out FINAL.vtk: time
-// integration from rest under box forces and gravity.
+// [--steps N] [--gravity] [--fix BOX]... [--force BOX FX,FY,FZ]... [--script SESSION.json]
+// --out FINAL.vtk: time integration from rest under box forces, gravity and a session script.
 
+#include <algorithm>
 #include <chrono>
 #include <cmath>
 #include <cstdio>
 #include <iostream>
+#include <optional>
 #include <string>
 #include <vector>
 
@@ -13,13 +15,15 @@
 #include "cli/cli_common.h"
 #include "cli/commands.h"
 #include "cli/fem_options.h"
+#include "io/control_mesh_json.h"
 #include "sim/standard_forms.h"
+#include "tools/session_script.h"
 
 namespace sculpt::cli {
 
 const char* const kSimulateUsage =
     "  simulate CONTROL.json [FEM options] [--integrator paper|implicit] --dt S --steps N\n"
-    "           [--gravity] --out FINAL.vtk\n"
+    "           [--gravity] [--script SESSION.json] --out FINAL.vtk\n"
     "      Integrates N steps of S seconds from rest (0 < S <= 10, 1 <= N <= 10000000) with\n"
     "      the paper's central differences or backward Euler (implicit, the default).\n"
     "      --gravity adds g = (0, -9.81, 0) m/s^2: the y axis points up. A step that fails is\n"
@@ -29,7 +33,11 @@ const char* const kSimulateUsage =
     "      fails even with sub-steps (exit 1) and keeps the state before it. FINAL.vtk is the\n"
     "      deformed control mesh with the POINT_DATA vector 'displacement'. Last line:\n"
     "      steps=<completed> time=<s> max_displacement=<m> kinetic_energy=<J>\n"
-    "      elastic_energy=<J> substeps=<total> cg_iterations=<mean per step>.\n";
+    "      elastic_energy=<J> substeps=<total> cg_iterations=<mean per step>.\n"
+    "      --script replays a session script (docs/file-formats.md) while stepping: grabs,\n"
+    "      inflation, paint and pins at their times; each event's start and end go to\n"
+    "      stderr. With --script, --steps defaults to the script's length. A malformed\n"
+    "      script is one error line naming the event and field (exit 2).\n";
 
 namespace {
 
@@ -116,11 +124,18 @@ int simulateCommand(const CliArgs& args, std::string& file) {
     throw UsageError("simulate needs exactly one CONTROL file (see --help)");
   const FemCommandOptions options = parseFemOptions(args);
   SimulationSettings settings = parseIntegratorAndStep(args, true);
-  if (!args.has("steps")) throw UsageError("--steps is required");
-  const int steps = args.intValue("steps", 0, 1, kMaxSteps);
   const std::string out = args.requiredValue("out");
   if (lowerExtension(out) != ".vtk")
     throw UsageError("--out " + out + ": unknown extension (expected .vtk)");
+  // The script is read before the model is built, so that a bad one fails fast.
+  std::optional<SessionScript> script;
+  if (args.has("script")) script = loadSessionScript(args.requiredValue("script"));
+  if (!args.has("steps") && !script) throw UsageError("--steps is required (or --script)");
+  const int steps =
+      args.has("steps")
+          ? args.intValue("steps", 0, 1, kMaxSteps)
+          : static_cast<int>(std::clamp(std::ceil(script->duration() / settings.timeStep - 1e-9),
+                                        1.0, double(kMaxSteps)));
 
   file = args.positional()[0];
   const std::optional<LoadedMesh> loaded = loadValidControlMesh(file);
@@ -133,6 +148,8 @@ int simulateCommand(const CliArgs& args, std::string& file) {
     throw UsageError(problem);
   applyConstraintsAndForces(simulator, options);
   if (args.has("gravity")) simulator.addLoad(std::make_unique<GravityForm>(*model, kGravity));
+  std::optional<ScriptPlayer> player;
+  if (script) player.emplace(simulator, std::move(*script));
 
   const Clock::time_point start = Clock::now();
   Clock::time_point lastProgress = start;
@@ -142,7 +159,9 @@ int simulateCommand(const CliArgs& args, std::string& file) {
   long long iterations = 0;
   bool failed = false;
   for (int i = 1; i <= steps; ++i) {
-    const StepReport report = simulator.step();
+    const StepReport report = player ? player->step() : simulator.step();
+    if (player)
+      for (const std::string& line : player->takeLog()) std::cerr << "simulate: script: " << line << '\n';
     iterations += report.iterations;
     if (report.ok) {
       ++completed;
@@ -191,6 +210,7 @@ int runSimulateCommand(const std::vector<std::string>& args) {
                                {"steps", true},
                                {"gravity", false},
                                {"out", true},
+                               {"script", true},
                                {"help", false}});
     return simulateCommand(CliArgs::parse(args, specs), file);
   });

@@ -94,21 +94,38 @@ double FemModel::totalMass() const {
 
 long FemModel::paintMaterial(const Eigen::Vector3d& centre, double radius,
                              const Material& material, std::string* error) {
-  if (const std::string problem = materialProblem(material); !problem.empty()) {
+  const double r2 = std::isinf(radius) ? radius : radius * radius;
+  return paintMaterial(
+      [&](const Eigen::Vector3d& rest) { return (rest - centre).squaredNorm() > r2 ? 0.0 : 1.0; },
+      material, MaterialFields{}, error);
+}
+
+long FemModel::paintMaterial(const std::function<double(const Eigen::Vector3d&)>& weight,
+                             const Material& target, const MaterialFields& fields,
+                             std::string* error) {
+  if (const std::string problem = materialProblem(target); !problem.empty()) {
     if (error) *error = "invalid material: " + problem;
     return -1;
   }
-  long changed = 0;
+  const auto blend = [](double& value, double goal, double w) {
+    value = w >= 1.0 ? goal : value + w * (goal - value);
+  };
+  long touched = 0;
   bool massChanged = false, stiffnessChanged = false;
-  const double r2 = std::isinf(radius) ? radius : radius * radius;
   for (uint32_t q = 0; q < mesh_->numGaussPoints(); ++q) {
-    if ((mesh_->gaussRestPosition[q] - centre).squaredNorm() > r2) continue;
+    const double w = weight(mesh_->gaussRestPosition[q]);
+    if (!(w > 0.0)) continue;
     Material& sample = mesh_->gaussMaterial[q];
-    massChanged |= sample.density != material.density || sample.damping != material.damping;
-    stiffnessChanged |= sample.youngs != material.youngs || sample.poisson != material.poisson;
-    sample = material;
-    mesh_->gaussLame[q] = lameParameters(material);
-    ++changed;
+    const Material before = sample;
+    if (fields.density) blend(sample.density, target.density, w);
+    if (fields.damping) blend(sample.damping, target.damping, w);
+    if (fields.youngs) blend(sample.youngs, target.youngs, w);
+    if (fields.poisson) blend(sample.poisson, target.poisson, w);
+    massChanged |= sample.density != before.density || sample.damping != before.damping;
+    const bool stiffer = sample.youngs != before.youngs || sample.poisson != before.poisson;
+    if (stiffer) mesh_->gaussLame[q] = lameParameters(sample);
+    stiffnessChanged |= stiffer;
+    ++touched;
   }
   // Only what depends on the changed fields is refreshed: the elastic kernel's packed moduli
   // for E and nu (the stiffness is matrix-free), the mass and damping matrices for density and
@@ -119,7 +136,7 @@ long FemModel::paintMaterial(const Eigen::Vector3d& centre, double radius,
     ++massVersion_;
   }
   if (massChanged || stiffnessChanged) ++materialVersion_;
-  return changed;
+  return touched;
 }
 
 }  // namespace sculpt

@@ -3,6 +3,7 @@
 // elements there, the elastic kernel and the reduced (control-point) mass and damping matrices.
 // Unknowns are the control points p; nodes are d = A p, node vectors go back with A^T.
 
+#include <functional>
 #include <memory>
 #include <optional>
 #include <string>
@@ -56,6 +57,21 @@ class FemModel {
   /// when radius is infinite) to `material`, and marks what depends on it for refresh. Returns
   /// the number of samples changed, or -1 (and a sentence in *error) for an invalid material.
   long paintMaterial(const Eigen::Vector3d& centre, double radius, const Material& material,
+                     std::string* error = nullptr);
+  /// Which fields of a Material a weighted paint writes.
+  struct MaterialFields {
+    bool density = true;
+    bool damping = true;
+    bool youngs = true;
+    bool poisson = true;
+  };
+  /// Weighted paint (brushes with falloff): every Gauss sample with w = weight(rest position) > 0
+  /// has each selected field f moved towards the target, f + min(w, 1) (f_target - f); w >= 1 sets
+  /// it exactly. Samples with w <= 0 (or NaN) are not touched, bit for bit. A blend of two valid
+  /// materials is valid. Returns the number of samples with w > 0, or -1 (and a sentence in
+  /// *error) for an invalid target.
+  long paintMaterial(const std::function<double(const Eigen::Vector3d&)>& weight,
+                     const Material& target, const MaterialFields& fields,
                      std::string* error = nullptr);
   /// Bumped by every material change (lets solvers know their factorisations are stale).
   uint64_t materialVersion() const { return materialVersion_; }

@@ -1,0 +1,70 @@
+#pragma once
+// Pull / push (ux.md "Brushes", McDonnell-Qin section 4.1): a zero-length spring
+// (PenaltySpringForm) from a grabbed material point to a target that the mouse or a stylus
+// moves. Push is the same spring with the drag reflected through the grab position (Ctrl in the
+// window): target = anchor - (cursor - anchor), anchor being where the point was when grabbed.
+//
+// Release either lets go (the spring is removed; the solid relaxes under its other loads) or
+// keeps: the spring stays, its target moved to where the point is at release, with the grab's
+// stiffness, so the solid holds its new shape around that point. Kept springs stay until
+// clearKept(). The tool keeps a reference to its simulator, which must outlive it.
+
+#include <Eigen/Core>
+#include <vector>
+
+#include "sim/fem_model.h"
+#include "sim/load_forms.h"
+#include "sim/material_point.h"
+#include "sim/simulator.h"
+
+namespace sculpt {
+
+enum class ReleaseMode { LetGo, Keep };
+
+/// Edge length of a typical element: cbrt(rest volume / #elements) (m).
+double typicalCellSize(const FemModel& model);
+
+/// 10 x E x cell size (N/m), E the largest Young's modulus of the Gauss samples: a spring about
+/// as stiff as a few elements, so the grabbed point follows the target closely without making
+/// the system badly conditioned.
+double defaultPullStiffness(const FemModel& model);
+
+class PullTool {
+ public:
+  explicit PullTool(Simulator& simulator);
+  ~PullTool();
+  PullTool(const PullTool&) = delete;
+  PullTool& operator=(const PullTool&) = delete;
+
+  /// Starts a drag at `point` (a previous one is let go). `cursor` is the first target;
+  /// stiffness in N/m (<= 0: defaultPullStiffness). `push` reflects every cursor through the
+  /// anchor. Throws std::invalid_argument for a non-finite cursor or stiffness.
+  void grab(const MaterialPoint& point, const Eigen::Vector3d& cursor, double stiffness = 0.0,
+            bool push = false);
+  /// Moves the target (reflected when pushing). Nothing when not grabbing.
+  void moveTarget(const Eigen::Vector3d& cursor);
+  void release(ReleaseMode mode = ReleaseMode::LetGo);
+  /// Removes the springs kept by release(Keep).
+  void clearKept();
+
+  bool active() const { return spring_ != nullptr; }
+  size_t numKept() const { return kept_.size(); }
+  /// Current position of the grabbed point (the anchor when not grabbing).
+  Eigen::Vector3d pointPosition() const;
+  /// The spring's target (m); the anchor when not grabbing.
+  Eigen::Vector3d target() const;
+  /// Position of the grabbed point at grab time.
+  const Eigen::Vector3d& anchor() const { return anchor_; }
+  /// k |x - target| (N) for the force line; 0 when not grabbing.
+  double springForce() const;
+
+ private:
+  Simulator& simulator_;
+  PenaltySpringForm* spring_ = nullptr;  // owned by the simulator
+  std::vector<const Form*> kept_;
+  MaterialPoint point_;
+  Eigen::Vector3d anchor_ = Eigen::Vector3d::Zero();
+  bool push_ = false;
+};
+
+}  // namespace sculpt

@@ -1,0 +1,404 @@
+#include "tools/session_script.h"
+
+#include <algorithm>
+#include <cmath>
+#include <fstream>
+#include <limits>
+#include <nlohmann/json.hpp>
+#include <numeric>
+#include <set>
+#include <sstream>
+#include <stdexcept>
+
+#include "io/control_mesh_json.h"
+#include "sim/material_point.h"
+#include "tools/pin_tool.h"
+
+namespace sculpt {
+
+using nlohmann::json;
+
+namespace {
+
+std::string number(double v) {
+  std::ostringstream out;
+  out.precision(9);
+  out << v;
+  return out.str();
+}
+
+// Reads the fields of one JSON object, throwing FileError with the context and field name.
+class Reader {
+ public:
+  Reader(const json& object, std::string context) : object_(object), context_(std::move(context)) {}
+
+  [[noreturn]] void fail(const std::string& field, const std::string& what) const {
+    throw FileError(context_ + ": '" + field + "' " + what + ".");
+  }
+  [[noreturn]] void failContext(const std::string& what) const {
+    throw FileError(context_ + ": " + what + ".");
+  }
+
+  bool has(const std::string& field) const { return object_.contains(field); }
+
+  // Rejects fields outside `known` (typos would otherwise be silently ignored).
+  void onlyFields(const std::set<std::string>& known) const {
+    for (const auto& item : object_.items())
+      if (!known.count(item.key())) failContext("unknown field '" + item.key() + "'");
+  }
+
+  double numberField(const std::string& field, double lo = -std::numeric_limits<double>::max(),
+                     bool loOpen = false, const char* range = "a finite number") const {
+    if (!has(field)) fail(field, "is missing (" + std::string(range) + ")");
+    return checkNumber(object_.at(field), field, lo, loOpen, range);
+  }
+  double numberOr(const std::string& field, double fallback, double lo, bool loOpen,
+                  const char* range) const {
+    return has(field) ? checkNumber(object_.at(field), field, lo, loOpen, range) : fallback;
+  }
+  bool boolOr(const std::string& field, bool fallback) const {
+    if (!has(field)) return fallback;
+    if (!object_.at(field).is_boolean()) fail(field, "must be true or false");
+    return object_.at(field).get<bool>();
+  }
+  std::string stringOr(const std::string& field, const std::string& fallback) const {
+    if (!has(field)) return fallback;
+    if (!object_.at(field).is_string()) fail(field, "must be a string");
+    return object_.at(field).get<std::string>();
+  }
+  Eigen::Vector3d vector(const std::string& field) const {
+    if (!has(field)) fail(field, "is missing (an array of 3 finite numbers)");
+    return vectorOf(object_.at(field), field);
+  }
+  Eigen::Vector3d vectorOf(const json& value, const std::string& field) const {
+    if (!value.is_array() || value.size() != 3) fail(field, "must be an array of 3 finite numbers");
+    Eigen::Vector3d v;
+    for (int i = 0; i < 3; ++i) {
+      const json& c = value[size_t(i)];
+      if (!c.is_number() || !std::isfinite(c.get<double>()))
+        fail(field, "must be an array of 3 finite numbers");
+      v[i] = c.get<double>();
+    }
+    return v;
+  }
+  const json& at(const std::string& field) const { return object_.at(field); }
+
+ private:
+  double checkNumber(const json& value, const std::string& field, double lo, bool loOpen,
+                     const char* range) const {
+    if (!value.is_number()) fail(field, "must be " + std::string(range) + " (got " + value.dump() + ")");
+    const double v = value.get<double>();
+    if (!std::isfinite(v) || v < lo || (loOpen && v == lo))
+      fail(field, "must be " + std::string(range) + " (got " + number(v) + ")");
+    return v;
+  }
+
+  const json& object_;
+  std::string context_;
+};
+
+constexpr double kInf = std::numeric_limits<double>::infinity();
+
+GrabEvent parseGrab(const Reader& r) {
+  r.onlyFields({"t", "type", "point", "path", "stiffness", "release", "keep", "push"});
+  GrabEvent grab;
+  grab.point = r.vector("point");
+  if (!r.has("path")) r.fail("path", "is missing (a non-empty array of [t, x, y, z])");
+  const json& path = r.at("path");
+  if (!path.is_array() || path.empty())
+    r.fail("path", "must be a non-empty array of [t, x, y, z]");
+  for (size_t k = 0; k < path.size(); ++k) {
+    const std::string field = "path[" + std::to_string(k) + "]";
+    const json& key = path[k];
+    if (!key.is_array() || key.size() != 4) r.fail(field, "must be an array [t, x, y, z]");
+    for (const json& c : key)
+      if (!c.is_number() || !std::isfinite(c.get<double>()))
+        r.fail(field, "must hold 4 finite numbers");
+    const double t = key[0].get<double>();
+    if (t < 0) r.fail(field, "must have a time >= 0 (got " + number(t) + ")");
+    if (!grab.path.empty() && t < grab.path.back().time)
+      r.fail(field, "must not go back in time (times must be non-decreasing)");
+    grab.path.push_back({t, {key[1].get<double>(), key[2].get<double>(), key[3].get<double>()}});
+  }
+  grab.stiffness = r.numberOr("stiffness", 0.0, 0.0, true, "a finite number > 0 (N/m)");
+  if (r.has("release")) grab.release = r.numberField("release", 0.0, false, "a finite number >= 0");
+  grab.keep = r.boolOr("keep", false);
+  grab.push = r.boolOr("push", false);
+  return grab;
+}
+
+InflateEvent parseInflate(const Reader& r) {
+  r.onlyFields({"t", "type", "centre", "radius", "pressure", "duration"});
+  InflateEvent inflate;
+  inflate.radius = r.numberOr("radius", kInf, 0.0, true, "a finite number > 0 (m)");
+  if (r.has("centre") || std::isfinite(inflate.radius)) inflate.centre = r.vector("centre");
+  inflate.pressure = r.numberField("pressure", -std::numeric_limits<double>::max(), false,
+                                   "a finite number (Pa)");
+  inflate.duration = r.numberField("duration", 0.0, false, "a finite number >= 0");
+  return inflate;
+}
+
+PaintEvent parsePaint(const Reader& r) {
+  r.onlyFields({"t", "type", "centre", "radius", "youngs", "density", "damping", "poisson",
+                "falloff", "strength", "mirror", "mirrorCentre"});
+  PaintEvent paint;
+  paint.centre = r.vector("centre");
+  MaterialBrushSettings& brush = paint.brush;
+  brush.radius = r.numberField("radius", 0.0, true, "a finite number > 0 (m)");
+  brush.fields = {r.has("density"), r.has("damping"), r.has("youngs"), r.has("poisson")};
+  if (!r.has("density") && !r.has("damping") && !r.has("youngs") && !r.has("poisson"))
+    r.failContext("a paint needs at least one of 'youngs', 'density', 'damping', 'poisson'");
+  brush.target.youngs = r.numberOr("youngs", brush.target.youngs, 0.0, true, "a finite number > 0 (Pa)");
+  brush.target.density =
+      r.numberOr("density", brush.target.density, 0.0, false, "a finite number >= 0 (kg/m^3)");
+  brush.target.damping =
+      r.numberOr("damping", brush.target.damping, 0.0, false, "a finite number >= 0");
+  brush.target.poisson = r.numberOr("poisson", brush.target.poisson, -1.0, true,
+                                    "a finite number in (-1, 0.5)");
+  if (brush.target.poisson >= 0.5)
+    r.fail("poisson", "must be a finite number in (-1, 0.5) (got " + number(brush.target.poisson) + ")");
+  const std::string falloff = r.stringOr("falloff", "smooth");
+  const std::optional<Falloff> parsed = parseFalloff(falloff);
+  if (!parsed)
+    r.fail("falloff", "must be one of smooth, sphere, linear, sharp, constant (got \"" + falloff + "\")");
+  brush.falloff = *parsed;
+  brush.strength = r.numberOr("strength", 1.0, 0.0, false, "a finite number in [0, 1]");
+  if (brush.strength > 1)
+    r.fail("strength", "must be a finite number in [0, 1] (got " + number(brush.strength) + ")");
+  const std::string mirror = r.stringOr("mirror", "x");
+  brush.mirror.x = brush.mirror.y = brush.mirror.z = false;
+  if (mirror != "none") {
+    for (char c : mirror) {
+      bool* axis = c == 'x' ? &brush.mirror.x : c == 'y' ? &brush.mirror.y : c == 'z' ? &brush.mirror.z : nullptr;
+      if (!axis || *axis)
+        r.fail("mirror", "must be \"none\" or distinct letters from \"xyz\" (got \"" + mirror + "\")");
+      *axis = true;
+    }
+  }
+  if (r.has("mirrorCentre")) paint.mirrorCentre = r.vector("mirrorCentre");
+  return paint;
+}
+
+PinEvent parsePin(const Reader& r) {
+  r.onlyFields({"t", "type", "box", "centre", "radius", "unpin"});
+  PinEvent pin;
+  if (r.has("box")) {
+    if (r.has("centre") || r.has("radius")) r.failContext("give either 'box' or 'centre' and 'radius'");
+    const json& box = r.at("box");
+    if (!box.is_array() || box.size() != 2)
+      r.fail("box", "must be [[xmin, ymin, zmin], [xmax, ymax, zmax]]");
+    const Eigen::Vector3d lo = r.vectorOf(box[0], "box"), hi = r.vectorOf(box[1], "box");
+    if ((lo.array() > hi.array()).any()) r.fail("box", "must have min <= max on every axis");
+    pin.box = Eigen::AlignedBox3d(lo, hi);
+  } else {
+    if (!r.has("centre") && !r.has("radius")) r.failContext("a pin needs 'box' or 'centre' and 'radius'");
+    pin.centre = r.vector("centre");
+    pin.radius = r.numberField("radius", 0.0, false, "a finite number >= 0 (m)");
+  }
+  pin.unpin = r.boolOr("unpin", false);
+  return pin;
+}
+
+}  // namespace
+
+Eigen::Vector3d GrabEvent::targetAt(double time) const {
+  if (path.empty()) return point;
+  if (time <= path.front().time) return path.front().target;
+  for (size_t k = 1; k < path.size(); ++k) {
+    if (time > path[k].time) continue;
+    const double span = path[k].time - path[k - 1].time;
+    if (span <= 0) return path[k].target;
+    const double s = (time - path[k - 1].time) / span;
+    return path[k - 1].target + s * (path[k].target - path[k - 1].target);
+  }
+  return path.back().target;
+}
+
+const char* ScriptEvent::typeName() const {
+  static const char* const kNames[] = {"grab", "inflate", "paint", "pin"};
+  return kNames[action.index()];
+}
+
+double ScriptEvent::endTime() const {
+  if (const auto* grab = std::get_if<GrabEvent>(&action))
+    return time + (grab->release ? *grab->release : grab->path.back().time);
+  if (const auto* inflate = std::get_if<InflateEvent>(&action)) return time + inflate->duration;
+  return time;
+}
+
+double SessionScript::duration() const {
+  double end = 0;
+  for (const ScriptEvent& e : events) end = std::max(end, e.endTime());
+  return end;
+}
+
+SessionScript parseSessionScript(std::string_view text, std::string_view sourceName) {
+  const std::string source(sourceName);
+  json root;
+  try {
+    root = json::parse(text.begin(), text.end());
+  } catch (const json::parse_error& e) {
+    throw FileError(source + ": not valid JSON (error at byte " + std::to_string(e.byte) +
+                    "; truncated or malformed).");
+  } catch (const json::exception&) {  // out_of_range: a number beyond double's range
+    throw FileError(source + ": not valid JSON (a number is out of range, not finite).");
+  }
+  if (!root.is_object()) throw FileError(source + ": the top level must be a JSON object.");
+  const Reader top(root, source);
+  top.onlyFields({"format", "version", "events", "description"});
+  if (top.stringOr("format", "") != "sculpt-session")
+    top.fail("format", "must be \"sculpt-session\"");
+  if (!top.has("version") || !root.at("version").is_number_integer())
+    top.fail("version", "must be the integer 1");
+  if (root.at("version").get<long long>() != 1)
+    top.fail("version", "is " + root.at("version").dump() + "; this program reads version 1");
+  if (!top.has("events") || !root.at("events").is_array()) top.fail("events", "must be an array");
+
+  SessionScript script;
+  const json& events = root.at("events");
+  for (size_t i = 0; i < events.size(); ++i) {
+    const std::string context = source + ": events[" + std::to_string(i) + "]";
+    if (!events[i].is_object()) throw FileError(context + ": must be a JSON object.");
+    const Reader bare(events[i], context);
+    const std::string type = bare.stringOr("type", "");
+    if (type.empty()) bare.fail("type", "must be one of grab, inflate, paint, pin");
+    const Reader r(events[i], context + " (" + type + ")");
+    ScriptEvent event;
+    event.index = i;
+    event.time = r.numberField("t", 0.0, false, "a finite number >= 0 (s)");
+    if (type == "grab") {
+      event.action = parseGrab(r);
+    } else if (type == "inflate") {
+      event.action = parseInflate(r);
+    } else if (type == "paint") {
+      event.action = parsePaint(r);
+    } else if (type == "pin") {
+      event.action = parsePin(r);
+    } else {
+      bare.fail("type", "must be one of grab, inflate, paint, pin (got \"" + type + "\")");
+    }
+    script.events.push_back(std::move(event));
+  }
+  return script;
+}
+
+SessionScript loadSessionScript(const std::filesystem::path& path) {
+  std::ifstream in(path, std::ios::binary);
+  if (!in) throw FileError(path.string() + ": cannot open the session script.");
+  std::ostringstream text;
+  text << in.rdbuf();
+  if (in.bad()) throw FileError(path.string() + ": cannot read the session script.");
+  return parseSessionScript(text.str(), path.string());
+}
+
+// ---------------------------------------------------------------------------------------------
+
+ScriptPlayer::ScriptPlayer(Simulator& simulator, SessionScript script)
+    : simulator_(simulator), script_(std::move(script)), runners_(script_.events.size()) {
+  order_.resize(script_.events.size());
+  std::iota(order_.begin(), order_.end(), size_t(0));
+  std::stable_sort(order_.begin(), order_.end(), [&](size_t a, size_t b) {
+    return script_.events[a].time < script_.events[b].time;
+  });
+  std::optional<MaterialPointLocator> locator;
+  for (size_t i = 0; i < script_.events.size(); ++i) {
+    const auto* grab = std::get_if<GrabEvent>(&script_.events[i].action);
+    if (!grab) continue;
+    if (!locator) locator.emplace(simulator_.model().mesh());
+    runners_[i].point = locator->locate(grab->point);
+    if (!runners_[i].point)
+      throw std::invalid_argument("events[" + std::to_string(i) +
+                                  "] (grab): the point cannot be located in the solid.");
+  }
+}
+
+ScriptPlayer::~ScriptPlayer() = default;
+
+std::optional<MaterialPoint> ScriptPlayer::grabPoint(size_t index) const {
+  return index < runners_.size() ? runners_[index].point : std::nullopt;
+}
+
+const PullTool* ScriptPlayer::pullTool(size_t index) const {
+  return index < runners_.size() ? runners_[index].pull.get() : nullptr;
+}
+
+std::vector<std::string> ScriptPlayer::takeLog() { return std::exchange(log_, {}); }
+
+void ScriptPlayer::start(size_t i) {
+  const ScriptEvent& event = script_.events[i];
+  Runner& runner = runners_[i];
+  const std::string name =
+      "t=" + number(time_) + " s: events[" + std::to_string(i) + "] " + event.typeName();
+  try {
+    if (const auto* grab = std::get_if<GrabEvent>(&event.action)) {
+      runner.pull = std::make_unique<PullTool>(simulator_);
+      runner.pull->grab(*runner.point, grab->targetAt(time_ - event.time), grab->stiffness,
+                        grab->push);
+      log_.push_back(name + " started");
+    } else if (const auto* inflate = std::get_if<InflateEvent>(&event.action)) {
+      runner.inflate = std::make_unique<InflateTool>(simulator_);
+      runner.inflate->press(inflate->centre, inflate->radius, inflate->pressure);
+      log_.push_back(name + " started (" + std::to_string(runner.inflate->numTriangles()) +
+                     " triangles)");
+    } else if (const auto* paint = std::get_if<PaintEvent>(&event.action)) {
+      MaterialBrushSettings brush = paint->brush;
+      if (paint->mirrorCentre) {
+        brush.mirror.centre = *paint->mirrorCentre;
+      } else {
+        const Points& rest = simulator_.model().restControl();
+        brush.mirror.centre =
+            0.5 * (rest.colwise().minCoeff() + rest.colwise().maxCoeff()).transpose();
+      }
+      const long touched = paintDab(simulator_.model(), paint->centre, brush);
+      log_.push_back(name + ": " + std::to_string(touched) + " samples painted");
+    } else if (const auto* pin = std::get_if<PinEvent>(&event.action)) {
+      const uint32_t n = pin->box ? pinInBox(simulator_, *pin->box, !pin->unpin)
+                                  : pinInSphere(simulator_, pin->centre, pin->radius, !pin->unpin);
+      log_.push_back(name + ": " + std::to_string(n) + " control points " +
+                     (pin->unpin ? "unpinned" : "pinned"));
+    }
+  } catch (const std::invalid_argument& e) {
+    throw std::invalid_argument("events[" + std::to_string(i) + "] (" + event.typeName() +
+                                "): " + e.what());
+  }
+  runner.phase = (runner.pull || runner.inflate) ? Phase::Active : Phase::Done;
+}
+
+void ScriptPlayer::finish(size_t i) {
+  Runner& runner = runners_[i];
+  const ScriptEvent& event = script_.events[i];
+  if (runner.pull) {
+    const auto* grab = std::get_if<GrabEvent>(&event.action);
+    runner.pull->release(grab->keep ? ReleaseMode::Keep : ReleaseMode::LetGo);
+  }
+  if (runner.inflate) runner.inflate->release();
+  runner.phase = Phase::Done;
+  log_.push_back("t=" + number(time_) + " s: events[" + std::to_string(i) + "] " +
+                 event.typeName() + " ended");
+}
+
+StepReport ScriptPlayer::step() {
+  const double h = simulator_.settings().timeStep;
+  const double due = time_ + 0.5 * h;  // events are rounded to the nearest step
+  for (size_t i : order_) {
+    const ScriptEvent& event = script_.events[i];
+    Runner& runner = runners_[i];
+    if (runner.phase == Phase::Pending && event.time <= due) start(i);
+    if (runner.phase != Phase::Active) continue;
+    const auto* grab = std::get_if<GrabEvent>(&event.action);
+    const bool ends = grab ? grab->release && event.endTime() <= due : event.endTime() <= due;
+    if (ends) {
+      finish(i);
+    } else if (grab) {
+      runner.pull->moveTarget(grab->targetAt(time_ + h - event.time));
+    }
+  }
+  const StepReport report = simulator_.step();
+  if (report.ok) {
+    ++steps_;
+    time_ = static_cast<double>(steps_) * h;
+  }
+  return report;
+}
+
+}  // namespace sculpt

@@ -1,0 +1,136 @@
+#pragma once
+// Session scripts (issue 6; docs/file-formats.md "Session script"): a JSON list of timed tool
+// events (grab and drag along a path, inflate for a while, paint a sphere, pin a box) that
+// ScriptPlayer replays on a Simulator as simulated time passes. Replay is deterministic: the
+// same script on the same model and settings gives the same control points bit for bit.
+//
+// Times are seconds of script time; time 0 is when the player is created. An event starts
+// before the first step whose start time t satisfies t_event <= t + h/2 (h the step), i.e. at
+// the step nearest to its time; events due at the same step start in file order after ordering
+// by time. A grab's path target is evaluated at the end of each step (where the implicit step
+// evaluates its forces); a grab or inflate ends before the first step with t_end <= t + h/2.
+
+#include <Eigen/Geometry>
+#include <filesystem>
+#include <memory>
+#include <optional>
+#include <string>
+#include <string_view>
+#include <variant>
+#include <vector>
+
+#include "sim/simulator.h"
+#include "tools/inflate_tool.h"
+#include "tools/material_brush.h"
+#include "tools/pull_tool.h"
+
+namespace sculpt {
+
+/// Grab the material point at rest position `point` with a spring and drag it along `path`.
+struct GrabEvent {
+  struct Key {
+    double time = 0;                                   ///< s after the event's start, >= 0
+    Eigen::Vector3d target = Eigen::Vector3d::Zero();  ///< m (world)
+  };
+  Eigen::Vector3d point = Eigen::Vector3d::Zero();  ///< rest position (nearest solid point)
+  std::vector<Key> path;                            ///< non-empty, times non-decreasing
+  double stiffness = 0;                             ///< N/m; 0: defaultPullStiffness
+  std::optional<double> release;                    ///< s after the start; none: held
+  bool keep = false;                                ///< release with ReleaseMode::Keep
+  bool push = false;                                ///< reflect the path through the anchor
+  /// Target at `time` s after the start: linear between keys, held outside them.
+  Eigen::Vector3d targetAt(double time) const;
+};
+
+/// Pressure on the boundary faces in a rest sphere for `duration` seconds.
+struct InflateEvent {
+  Eigen::Vector3d centre = Eigen::Vector3d::Zero();
+  double radius = std::numeric_limits<double>::infinity();  ///< m; infinity: whole boundary
+  double pressure = 0;                                       ///< Pa; negative deflates
+  double duration = 0;                                       ///< s
+};
+
+/// One material-brush dab; mirror centre none: the centre of the rest control-point box.
+struct PaintEvent {
+  Eigen::Vector3d centre = Eigen::Vector3d::Zero();
+  MaterialBrushSettings brush;
+  std::optional<Eigen::Vector3d> mirrorCentre;
+};
+
+/// Pin (or unpin) the control points in a rest box or sphere.
+struct PinEvent {
+  std::optional<Eigen::AlignedBox3d> box;  ///< else the sphere
+  Eigen::Vector3d centre = Eigen::Vector3d::Zero();
+  double radius = 0;
+  bool unpin = false;
+};
+
+struct ScriptEvent {
+  size_t index = 0;  ///< position in the file's "events" array
+  double time = 0;   ///< s
+  std::variant<GrabEvent, InflateEvent, PaintEvent, PinEvent> action;
+  const char* typeName() const;  ///< "grab", "inflate", "paint", "pin"
+  /// When it stops acting: the start for paint and pin, start + release (or the last path key)
+  /// for grab, start + duration for inflate.
+  double endTime() const;
+};
+
+struct SessionScript {
+  std::vector<ScriptEvent> events;  ///< in file order
+  /// The latest endTime() (0 without events).
+  double duration() const;
+};
+
+/// Parses the JSON text. Throws FileError (io/control_mesh_json.h) with one sentence prefixed by
+/// `sourceName`, naming the event index and field, e.g.
+/// "s.json: events[2] (inflate): 'duration' must be a finite number >= 0 (got -1)."
+SessionScript parseSessionScript(std::string_view text, std::string_view sourceName);
+/// Reads and parses a file. Throws FileError.
+SessionScript loadSessionScript(const std::filesystem::path& path);
+
+class ScriptPlayer {
+ public:
+  /// Locates every grab point in the model. The simulator must outlive the player; the
+  /// player's loads are removed when it is destroyed (kept springs included). Throws
+  /// std::invalid_argument when a grab point cannot be located (a model without elements).
+  ScriptPlayer(Simulator& simulator, SessionScript script);
+  ~ScriptPlayer();
+  ScriptPlayer(const ScriptPlayer&) = delete;
+  ScriptPlayer& operator=(const ScriptPlayer&) = delete;
+
+  /// Ends and starts the events due, sets the drag targets, and advances the simulator by one
+  /// step. Throws std::invalid_argument when an event cannot be applied (a paint whose brush
+  /// is rejected), naming the event.
+  StepReport step();
+
+  double time() const { return time_; }  ///< script time (s)
+  const SessionScript& script() const { return script_; }
+  /// The material point grabbed by events[index] (nullopt for other events).
+  std::optional<MaterialPoint> grabPoint(size_t index) const;
+  /// The pull tool of events[index] (nullptr for other events).
+  const PullTool* pullTool(size_t index) const;
+  /// Lines about events started and ended since the last call ("t=0.5 s: events[1] inflate
+  /// started ..."), for a command-line log.
+  std::vector<std::string> takeLog();
+
+ private:
+  enum class Phase { Pending, Active, Done };
+  struct Runner {
+    Phase phase = Phase::Pending;
+    std::optional<MaterialPoint> point;
+    std::unique_ptr<PullTool> pull;
+    std::unique_ptr<InflateTool> inflate;
+  };
+  void start(size_t i);
+  void finish(size_t i);
+
+  Simulator& simulator_;
+  SessionScript script_;
+  std::vector<size_t> order_;  // event indices by (time, index)
+  std::vector<Runner> runners_;
+  long long steps_ = 0;
+  double time_ = 0;
+  std::vector<std::string> log_;
+};
+
+}  // namespace sculpt
