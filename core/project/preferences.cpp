@@ -1,0 +1,152 @@
+#include "project/preferences.h"
+
+#include <algorithm>
+#include <cmath>
+#include <cstdlib>
+#include <nlohmann/json.hpp>
+#include <system_error>
+
+#include "io/atomic_file.h"
+#include "io/control_mesh_json.h"  // FileError
+
+namespace sculpt {
+namespace {
+
+using nlohmann::json;
+
+constexpr const char* kFormatName = "sculpt-preferences";
+constexpr int kFormatVersion = 1;
+
+// Reads one field if present and of the right kind; otherwise keeps the default and notes it.
+class FieldReader {
+ public:
+  FieldReader(const json& root, std::string& problem) : root_(root), problem_(problem) {}
+
+  template <typename T, typename Check>
+  void read(const char* key, T& out, Check valid) {
+    const auto it = root_.find(key);
+    if (it == root_.end()) return;
+    try {
+      T value = it->get<T>();
+      if (valid(value)) {
+        out = value;
+        return;
+      }
+    } catch (const json::exception&) {
+    }
+    if (problem_.empty()) problem_ = std::string("\"") + key + "\" has an unusable value";
+  }
+
+ private:
+  const json& root_;
+  std::string& problem_;
+};
+
+}  // namespace
+
+void Preferences::addRecentFile(const std::string& path) {
+  recentFiles.erase(std::remove(recentFiles.begin(), recentFiles.end(), path), recentFiles.end());
+  recentFiles.insert(recentFiles.begin(), path);
+  if (recentFiles.size() > kMaxRecentFiles) recentFiles.resize(kMaxRecentFiles);
+}
+
+std::filesystem::path preferencesPath(const char* xdgConfigHome, const char* home) {
+  // The XDG base-directory spec says relative values are to be ignored.
+  if (xdgConfigHome && xdgConfigHome[0] == '/') {
+    return std::filesystem::path(xdgConfigHome) / "sculpt" / "preferences.json";
+  }
+  if (home && home[0] != '\0') {
+    return std::filesystem::path(home) / ".config" / "sculpt" / "preferences.json";
+  }
+  return "sculpt-preferences.json";
+}
+
+std::filesystem::path preferencesPath() {
+  return preferencesPath(std::getenv("XDG_CONFIG_HOME"), std::getenv("HOME"));
+}
+
+LoadedPreferences loadPreferences(const std::filesystem::path& path) {
+  LoadedPreferences result;
+  std::error_code error;
+  if (!std::filesystem::exists(path, error)) return result;
+  const std::string where = path.string() + ": ";
+  const std::string suffix = "; using the defaults";
+  json root;
+  try {
+    const std::string text = readFile(path);
+    root = json::parse(text);
+  } catch (const FileError& e) {
+    result.warning = std::string(e.what()) + suffix;
+    return result;
+  } catch (const json::exception&) {
+    result.warning = where + "not valid JSON" + suffix;
+    return result;
+  }
+  if (!root.is_object() || root.value("format", json()) != kFormatName) {
+    result.warning = where + "not a sculpt preferences file" + suffix;
+    return result;
+  }
+  if (!root["version"].is_number_integer() || root["version"].get<int64_t>() > kFormatVersion) {
+    result.warning = where + "written by a newer sculpt or of unknown version" + suffix;
+    return result;
+  }
+  // Field by field: one bad value loses only itself.
+  Preferences& p = result.preferences;
+  std::string problem;
+  FieldReader fields(root, problem);
+  fields.read("keyMap", p.keyMap, [](const std::string&) { return true; });
+  fields.read("uiScale", p.uiScale,
+              [](double s) { return std::isfinite(s) && s >= 0.25 && s <= 8; });
+  if (const auto it = root.find("window"); it != root.end()) {
+    if (it->is_object()) {
+      FieldReader window(*it, problem);
+      auto any = [](int) { return true; };
+      auto size = [](int s) { return s >= 64 && s <= 100000; };
+      window.read("x", p.window.x, any);
+      window.read("y", p.window.y, any);
+      window.read("width", p.window.width, size);
+      window.read("height", p.window.height, size);
+      window.read("maximized", p.window.maximized, [](bool) { return true; });
+    } else if (problem.empty()) {
+      problem = "\"window\" is not an object";
+    }
+  }
+  std::vector<std::string> recent;
+  fields.read("recentFiles", recent, [](const std::vector<std::string>&) { return true; });
+  for (auto it = recent.rbegin(); it != recent.rend(); ++it) p.addRecentFile(*it);
+  if (!problem.empty()) result.warning = where + problem + "; using the default for it";
+  return result;
+}
+
+void savePreferences(const Preferences& preferences, const std::filesystem::path& path) {
+  if (path.has_parent_path()) {
+    std::error_code error;
+    std::filesystem::create_directories(path.parent_path(), error);
+    if (error) {
+      throw FileError(path.parent_path().string() + ": cannot create the directory (" +
+                      error.message() + ")");
+    }
+  }
+  const json root = {
+      {"format", kFormatName},
+      {"version", kFormatVersion},
+      {"keyMap", preferences.keyMap},
+      {"uiScale", preferences.uiScale},
+      {"window",
+       {{"x", preferences.window.x},
+        {"y", preferences.window.y},
+        {"width", preferences.window.width},
+        {"height", preferences.window.height},
+        {"maximized", preferences.window.maximized}}},
+      {"recentFiles", preferences.recentFiles},
+  };
+  std::string text;
+  try {
+    text = root.dump(2) + "\n";
+  } catch (const json::exception&) {
+    throw FileError(path.string() + ": cannot write preferences (a file name is not valid UTF-8)");
+  }
+  writeFileAtomically(path, text);
+}
+
+}  // namespace sculpt
