@@ -65,7 +65,8 @@ cmake --build "$ROOT/$BUILD_DIR" --parallel "$JOBS"
 
 stage "4/4 tests (ctest)"
 if [[ $SANITIZE -eq 2 ]]; then
-  export TSAN_OPTIONS="${TSAN_OPTIONS:-halt_on_error=1}"
+  # Mesa's llvmpipe is not instrumented: scripts/sanitizers/tsan.supp says why its reports go.
+  export TSAN_OPTIONS="${TSAN_OPTIONS:-halt_on_error=1 suppressions=$ROOT/scripts/sanitizers/tsan.supp}"
 fi
 if [[ $SANITIZE -eq 1 ]]; then
   export ASAN_OPTIONS="${ASAN_OPTIONS:-detect_leaks=1:abort_on_error=1}"

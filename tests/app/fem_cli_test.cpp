@@ -353,3 +353,41 @@ TEST_F(FemCliTest, InfoReportsElementCounts) {
 
 }  // namespace
 }  // namespace sculpt
+
+namespace sculpt::test {
+namespace {
+
+// simulate --script: a session script (docs/file-formats.md) drives the tools while stepping. A
+// grab that pulls the top of the pinned block up moves it; a malformed script is bad input that
+// names the script.
+class ScriptCliTest : public CliFixture {
+ protected:
+  ScriptCliTest() : CliFixture("sculpt_script_cli_test_") {}
+};
+
+TEST_F(ScriptCliTest, GrabScriptMovesTheBlockAndBadScriptsAreBadInput) {
+  const std::string block = quote(std::string(SCULPT_SOURCE_DIR) + "/assets/block3.json");
+  const std::string script = path("pull.json");
+  writeText(script, R"({"format": "sculpt-session", "version": 1, "events": [
+    {"t": 0, "type": "pin", "box": [[-1, -1, -1], [4, 0.01, 4]]},
+    {"t": 0, "type": "grab", "point": [1.5, 3, 1.5],
+     "path": [[0, 1.5, 3, 1.5], [0.3, 1.5, 3.5, 1.5]], "stiffness": 5e5}]})");
+  const CliResult pulled = run("simulate " + block + " --levels 1 --dt 0.02 --steps 20 --script " +
+                               quote(script) + " --out " + quote(path("pulled.vtk")));
+  ASSERT_EQ(pulled.exitCode, 0) << pulled.err;
+  const auto v = numbers(keyValues(pulled.lastLine()));
+  EXPECT_GT(v.at("max_displacement"), 0.1) << pulled.lastLine();  // pulled up by up to 0.5 m
+
+  writeText(path("bad.json"), R"({"format": "sculpt-session", "version": 1, "events": [
+    {"t": 0, "type": "inflate", "centre": [1, 1, 1], "radius": 1, "pressure": 10, "duration": -1}]})");
+  expectBadInput("simulate " + block + " --levels 1 --dt 0.02 --steps 2 --script " +
+                     quote(path("bad.json")) + " --out " + quote(path("x.vtk")),
+                 "bad.json");
+  writeText(path("cut.json"), R"({"format": "sculpt-session", "version": 1, "events": [{"t": 0,)");
+  expectBadInput("simulate " + block + " --levels 1 --dt 0.02 --steps 2 --script " +
+                     quote(path("cut.json")) + " --out " + quote(path("y.vtk")),
+                 "cut.json");
+}
+
+}  // namespace
+}  // namespace sculpt::test
