@@ -9,6 +9,7 @@
 #include <vector>
 
 #include "io/atomic_file.h"
+#include "io/json_nesting.h"
 #include "io/number_text.h"
 #include "mesh/standard_cell.h"
 
@@ -59,30 +60,6 @@ std::string describe(const json& value) {
   }
 }
 
-// Finds the first place where brackets nest deeper than kMaxNesting (outside strings), so that
-// no later stage recurses on a hostile file. Returns the byte offset or npos.
-size_t excessiveNesting(std::string_view text) {
-  int depth = 0;
-  bool inString = false;
-  for (size_t i = 0; i < text.size(); ++i) {
-    const char ch = text[i];
-    if (inString) {
-      if (ch == '\\') {
-        ++i;  // skip the escaped character
-      } else if (ch == '"') {
-        inString = false;
-      }
-    } else if (ch == '"') {
-      inString = true;
-    } else if (ch == '[' || ch == '{') {
-      if (++depth > kMaxNesting) return i;
-    } else if (ch == ']' || ch == '}') {
-      --depth;
-    }
-  }
-  return std::string_view::npos;
-}
-
 // The detail of a nlohmann parse error ("unexpected end of input"), without its decoration.
 std::string parseErrorDetail(const json::exception& error) {
   std::string_view what = error.what();
@@ -127,7 +104,7 @@ class ControlMeshParser {
     if (text.find_first_not_of(" \t\r\n") == std::string_view::npos) {
       fail("", "not valid JSON (the file is empty)");
     }
-    if (const size_t at = excessiveNesting(text); at != std::string_view::npos) {
+    if (const size_t at = excessiveJsonNesting(text, kMaxNesting); at != std::string_view::npos) {
       fail("", "not valid JSON (nested deeper than " + std::to_string(kMaxNesting) +
                    " levels at byte " + std::to_string(at) + ")");
     }

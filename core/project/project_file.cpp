@@ -9,6 +9,7 @@
 #include <variant>
 
 #include "io/atomic_file.h"
+#include "io/json_nesting.h"
 
 namespace sculpt {
 namespace {
@@ -252,29 +253,6 @@ class BlobWriter {
 // ---------------------------------------------------------------------------------------------
 // Reading. Every failure is one FileError sentence prefixed by the source name.
 
-// Depth of bracket nesting outside strings; a hostile manifest must not recurse the parser deep.
-bool nestsTooDeep(std::string_view text) {
-  int depth = 0;
-  bool inString = false;
-  for (size_t i = 0; i < text.size(); ++i) {
-    const char ch = text[i];
-    if (inString) {
-      if (ch == '\\') {
-        ++i;
-      } else if (ch == '"') {
-        inString = false;
-      }
-    } else if (ch == '"') {
-      inString = true;
-    } else if (ch == '[' || ch == '{') {
-      if (++depth > kMaxNesting) return true;
-    } else if (ch == ']' || ch == '}') {
-      --depth;
-    }
-  }
-  return false;
-}
-
 class ProjectReader {
  public:
   explicit ProjectReader(std::string_view sourceName) : source_(sourceName) {}
@@ -377,7 +355,8 @@ class ProjectReader {
   }
 
   json parseManifest(std::string_view text) const {
-    if (nestsTooDeep(text)) fail("the manifest is not valid JSON (nested too deep)");
+    if (excessiveJsonNesting(text, kMaxNesting) != std::string_view::npos)
+      fail("the manifest is not valid JSON (nested too deep)");
     try {
       return json::parse(text.begin(), text.end());
     } catch (const json::exception& error) {

@@ -11,6 +11,7 @@
 #include <stdexcept>
 
 #include "io/control_mesh_json.h"
+#include "io/json_nesting.h"
 #include "sim/material_point.h"
 #include "tools/pin_tool.h"
 
@@ -234,6 +235,11 @@ double SessionScript::duration() const {
 
 SessionScript parseSessionScript(std::string_view text, std::string_view sourceName) {
   const std::string source(sourceName);
+  // Scripts are shallow; a hostile file must not make the parser recurse deep.
+  constexpr int kMaxNesting = 16;
+  if (const size_t at = excessiveJsonNesting(text, kMaxNesting); at != std::string_view::npos)
+    throw FileError(source + ": not valid JSON (nested deeper than " + std::to_string(kMaxNesting) +
+                    " levels at byte " + std::to_string(at) + ").");
   json root;
   try {
     root = json::parse(text.begin(), text.end());

@@ -88,3 +88,21 @@ TEST(SessionScript, MissingFileIsAFileError) {
 
 }  // namespace
 }  // namespace sculpt
+
+namespace sculpt {
+namespace {
+
+TEST(SessionScriptNesting, DeeplyNestedFileIsRejectedBeforeParsing) {
+  const std::string text = "{\"events\": " + std::string(100000, '[') + std::string(100000, ']') + "}";
+  try {
+    parseSessionScript(text, "deep.json");
+    FAIL() << "no error";
+  } catch (const FileError& error) {
+    EXPECT_NE(std::string(error.what()).find("deep.json: not valid JSON (nested deeper than 16"),
+              std::string::npos)
+        << error.what();
+  }
+}
+
+}  // namespace
+}  // namespace sculpt
