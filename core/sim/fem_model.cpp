@@ -100,6 +100,42 @@ long FemModel::paintMaterial(const Eigen::Vector3d& centre, double radius,
       material, MaterialFields{}, error);
 }
 
+bool FemModel::setMaterials(std::span<const Material> materials, std::string* error) {
+  const auto fail = [&](const std::string& why) {
+    if (error) *error = why;
+    return false;
+  };
+  if (materials.size() != mesh_->numGaussPoints())
+    return fail(std::to_string(materials.size()) + " materials for " +
+                std::to_string(mesh_->numGaussPoints()) + " Gauss points");
+  for (size_t q = 0; q < materials.size(); ++q)
+    if (const std::string problem = materialProblem(materials[q]); !problem.empty())
+      return fail("material " + std::to_string(q) + ": " + problem);
+  bool massChanged = false, stiffnessChanged = false;
+  for (size_t q = 0; q < materials.size(); ++q) {
+    Material& sample = mesh_->gaussMaterial[q];
+    const Material& m = materials[q];
+    massChanged |= sample.density != m.density || sample.damping != m.damping;
+    stiffnessChanged |= sample.youngs != m.youngs || sample.poisson != m.poisson;
+    sample = m;
+    mesh_->gaussLame[q] = lameParameters(m);
+  }
+  refreshAfterMaterialChange(massChanged, stiffnessChanged);
+  return true;
+}
+
+void FemModel::refreshAfterMaterialChange(bool massChanged, bool stiffnessChanged) {
+  // Only what depends on the changed fields is refreshed: the elastic kernel's packed moduli
+  // for E and nu (the stiffness is matrix-free), the mass and damping matrices for density and
+  // damping (lazily, on next use).
+  if (stiffnessChanged) elastic_->refreshMaterial();
+  if (massChanged) {
+    matricesStale_ = true;
+    ++massVersion_;
+  }
+  if (massChanged || stiffnessChanged) ++materialVersion_;
+}
+
 long FemModel::paintMaterial(const std::function<double(const Eigen::Vector3d&)>& weight,
                              const Material& target, const MaterialFields& fields,
                              std::string* error) {
@@ -127,15 +163,7 @@ long FemModel::paintMaterial(const std::function<double(const Eigen::Vector3d&)>
     stiffnessChanged |= stiffer;
     ++touched;
   }
-  // Only what depends on the changed fields is refreshed: the elastic kernel's packed moduli
-  // for E and nu (the stiffness is matrix-free), the mass and damping matrices for density and
-  // damping (lazily, on next use).
-  if (stiffnessChanged) elastic_->refreshMaterial();
-  if (massChanged) {
-    matricesStale_ = true;
-    ++massVersion_;
-  }
-  if (massChanged || stiffnessChanged) ++materialVersion_;
+  refreshAfterMaterialChange(massChanged, stiffnessChanged);
   return touched;
 }
 

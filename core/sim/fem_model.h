@@ -6,6 +6,7 @@
 #include <functional>
 #include <memory>
 #include <optional>
+#include <span>
 #include <string>
 
 #include "fem/elastic_kernel.h"
@@ -73,6 +74,10 @@ class FemModel {
   long paintMaterial(const std::function<double(const Eigen::Vector3d&)>& weight,
                      const Material& target, const MaterialFields& fields,
                      std::string* error = nullptr);
+  /// Sets every Gauss sample's material at once (e.g. restored from a project file: one per
+  /// FemMesh Gauss point, in order). Returns false with a sentence in *error, changing nothing,
+  /// for a count mismatch or an invalid material.
+  bool setMaterials(std::span<const Material> materials, std::string* error = nullptr);
   /// Bumped by every material change (lets solvers know their factorisations are stale).
   uint64_t materialVersion() const { return materialVersion_; }
   /// Bumped only when density or damping change (M~ and D~ then change).
@@ -90,6 +95,8 @@ class FemModel {
   uint64_t materialVersion_ = 0;
   uint64_t massVersion_ = 0;
   void refreshMatrices() const;
+  /// Marks what depends on changed material fields for refresh and bumps the versions.
+  void refreshAfterMaterialChange(bool massChanged, bool stiffnessChanged);
 };
 
 }  // namespace sculpt
