@@ -61,6 +61,7 @@ struct AppModel {
   FieldRange fieldRange;  ///< the colour map's range this frame
   std::string sceneFile;  ///< the scene shown (empty: the default bunny)
   std::array<char, 1024> scenePathInput{};
+  std::vector<std::string> recentScenes;  ///< most recent first (File > Recent)
   bool showHelp = false, showPanels = true;
   float uiScale = 1.0f;
   std::vector<Toast> toasts;

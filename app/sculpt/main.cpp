@@ -13,8 +13,11 @@
 
 #include <chrono>
 #include <exception>
+#include <filesystem>
 #include <iostream>
+#include <utility>
 
+#include "project/preferences.h"
 #include "sculpt/options.h"
 #include "sculpt/sculpt_app.h"
 
@@ -39,6 +42,14 @@ int main(int argc, char** argv) {
   glfwWindowHint(GLFW_OPENGL_FORWARD_COMPAT, GLFW_TRUE);
   glfwWindowHint(GLFW_SCALE_TO_MONITOR, GLFW_TRUE);  // HiDPI: the window grows with the scale
   if (options.headless) glfwWindowHint(GLFW_VISIBLE, GLFW_FALSE);
+  // The window comes back where and as large as it was (headless runs use --size or defaults).
+  const std::filesystem::path preferencesFile = sculpt::preferencesPath();
+  sculpt::LoadedPreferences preferences = sculpt::loadPreferences(preferencesFile);
+  const sculpt::WindowGeometry& saved = preferences.preferences.window;
+  if (!options.headless && !options.sizeGiven) {
+    options.width = saved.width, options.height = saved.height;
+    if (saved.maximized) glfwWindowHint(GLFW_MAXIMIZED, GLFW_TRUE);
+  }
   GLFWwindow* window = glfwCreateWindow(options.width, options.height, "Subdivision Sculpt",
                                         nullptr, nullptr);
   if (!window) {
@@ -46,11 +57,13 @@ int main(int argc, char** argv) {
     glfwTerminate();
     return 1;
   }
+  if (!options.headless && !options.sizeGiven && saved.x >= 0 && saved.y >= 0)
+    glfwSetWindowPos(window, saved.x, saved.y);
   glfwMakeContextCurrent(window);
   glfwSwapInterval(1);
   int status = 0;
   try {
-    sculpt::app::SculptApp app(window, options, started);
+    sculpt::app::SculptApp app(window, options, started, std::move(preferences), preferencesFile);
     status = options.benchFrames > 0 ? app.runBenchmark()
              : options.headless      ? app.runHeadless()
                                      : app.runWindow();

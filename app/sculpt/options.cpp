@@ -132,6 +132,7 @@ Options parseOptions(int argc, char** argv, bool* helpShown) {
       options.benchFrames = intIn(arg, value(), 1, 100000);
     } else if (arg == "--size") {
       const std::string size = value();
+      options.sizeGiven = true;
       char tail = 0;
       if (std::sscanf(size.c_str(), "%dx%d%c", &options.width, &options.height, &tail) != 2 ||
           options.width < 64 || options.height < 64 || options.width > 8192 ||

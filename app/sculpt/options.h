@@ -26,6 +26,7 @@ struct Options {
   bool transparent = false;
   bool noUi = false;  ///< headless: the 3D view alone, without panels
   int width = 1280, height = 800;
+  bool sizeGiven = false;  ///< --size given (else the window takes its saved size)
   double quitAfter = 0.0;  ///< window mode: close this long after the first frame with the scene
   int benchFrames = 0;     ///< headless: time N frames (sculpt --bench) instead of a screenshot
 };

@@ -23,6 +23,11 @@ void menuBar(AppModel& m) {
   Requests& r = m.requests;
   if (ImGui::BeginMenu("File")) {
     if (ImGui::MenuItem("Load default scene (bunny)")) r.loadScene = "<default>";
+    if (ImGui::BeginMenu("Recent scenes", !m.recentScenes.empty())) {
+      for (const std::string& path : m.recentScenes)
+        if (ImGui::MenuItem(path.c_str())) r.loadScene = path;
+      ImGui::EndMenu();
+    }
     if (ImGui::MenuItem("Screenshot", "F12")) r.screenshot = true;
     if (ImGui::BeginMenu("Screenshot options")) {
       ImGui::RadioButton("1x", &m.screenshot.supersample, 1);

@@ -53,12 +53,22 @@ SceneSource sourceFor(const std::string& path) {
 
 }  // namespace
 
-SculptApp::SculptApp(GLFWwindow* window, const Options& options, Clock::time_point started)
+SculptApp::SculptApp(GLFWwindow* window, const Options& options, Clock::time_point started,
+                     LoadedPreferences preferences, std::filesystem::path preferencesFile)
     : window_(window),
       options_(options),
       started_(started),
       controller_(std::make_unique<SceneController>(!options.headless)),
-      navigator_(options.stylusPreset ? NavigationPreset::Stylus : NavigationPreset::Blender) {
+      navigator_(options.stylusPreset ? NavigationPreset::Stylus : NavigationPreset::Blender),
+      preferences_(std::move(preferences.preferences)),
+      preferencesFile_(std::move(preferencesFile)) {
+  if (!preferences.warning.empty()) model_.toast(preferences.warning, true, 8.0);
+  if (!preferences_.keyMap.empty()) {  // the user's key map; bad lines are reported and skipped
+    std::string problems;
+    keys_ = KeyMap::fromText(preferences_.keyMap, &problems);
+    if (!problems.empty()) model_.toast("preferences key map: " + problems, true, 8.0);
+  }
+  model_.recentScenes = preferences_.recentFiles;
   model_.display = options.display;
   model_.preset = navigator_.preset();
   if (options.level) model_.settings.level = *options.level;
@@ -76,7 +86,9 @@ SculptApp::SculptApp(GLFWwindow* window, const Options& options, Clock::time_poi
   imguiReady_ = true;
   float sx = 1.0f, sy = 1.0f;
   glfwGetWindowContentScale(window_, &sx, &sy);
-  model_.uiScale = uiScale(sx, sy, options.uiScale);
+  // --ui-scale for this run, else the user's saved choice, else the monitor's content scale.
+  model_.uiScale = uiScale(sx, sy, options.uiScale > 0.0f ? options.uiScale
+                                                          : static_cast<float>(preferences_.uiScale));
   applyUiScale();
   // Moving the window to a monitor of another scale re-scales the UI (unless --ui-scale is given).
   glfwSetWindowUserPointer(window_, this);
@@ -94,6 +106,7 @@ SculptApp::SculptApp(GLFWwindow* window, const Options& options, Clock::time_poi
 }
 
 SculptApp::~SculptApp() {
+  if (!options_.headless) savePreferencesOnClose();
   controller_.reset();  // stop the simulation before the GL objects go
   if (imguiReady_) {
     ImGui_ImplOpenGL3_Shutdown();
@@ -139,6 +152,12 @@ void SculptApp::syncScene() {
     geometryUploadSeconds_ = secondsSince(uploadStart);
     geometryArrivedSeconds_ = secondsSince(started_);
     model_.status.description = geometry->description;
+    if (!model_.sceneFile.empty()) {  // a scene that built is worth offering again
+      std::error_code ignored;
+      const std::filesystem::path absolute = std::filesystem::absolute(model_.sceneFile, ignored);
+      preferences_.addRecentFile(absolute.empty() ? model_.sceneFile : absolute.string());
+      model_.recentScenes = preferences_.recentFiles;
+    }
     model_.status.elementCounts = geometry->elementCounts;
     model_.status.triangles = view_.numTriangles();
     if (!cameraFramed_) {
@@ -257,7 +276,10 @@ void SculptApp::carryOutRequests() {
     model_.toast(error.what(), true, 8.0);
   }
   if (r.cancelBuild) controller_->cancelBuild();
-  if (r.uiScaleChanged) applyUiScale();
+  if (r.uiScaleChanged) {
+    applyUiScale();
+    preferences_.uiScale = model_.uiScale;  // a choice in the menu is remembered
+  }
   if (r.screenshot) {
     const std::string path = nextScreenshotPath();
     try {
@@ -352,6 +374,21 @@ void SculptApp::frame(int fbWidth, int fbHeight, bool interactive) {
   lastFbWidth_ = fbWidth, lastFbHeight_ = fbHeight;
   carryOutRequests();
   if (view_.hasGeometry() && !firstFrameReported_) reportFirstFrame();
+}
+
+void SculptApp::savePreferencesOnClose() {
+  int x = 0, y = 0;
+  glfwGetWindowPos(window_, &x, &y);
+  preferences_.window.maximized = glfwGetWindowAttrib(window_, GLFW_MAXIMIZED) == GLFW_TRUE;
+  if (!preferences_.window.maximized) {
+    preferences_.window.x = x, preferences_.window.y = y;
+    glfwGetWindowSize(window_, &preferences_.window.width, &preferences_.window.height);
+  }
+  try {
+    savePreferences(preferences_, preferencesFile_);
+  } catch (const std::exception& error) {  // never lose the session over preferences
+    std::cerr << "warning: preferences not saved: " << error.what() << '\n';
+  }
 }
 
 void SculptApp::reportFirstFrame() {

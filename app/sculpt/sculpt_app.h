@@ -12,6 +12,7 @@
 #include <optional>
 #include <string>
 
+#include "project/preferences.h"
 #include "render/gpu_timer.h"
 #include "sculpt/app_model.h"
 #include "sculpt/navigation.h"
@@ -25,9 +26,11 @@ namespace sculpt::app {
 class SculptApp {
  public:
   /// `window` has a current OpenGL 3.3 core context; ImGui is set up here. `started`: when the
-  /// process started (for the time to the first frame).
+  /// process started (for the time to the first frame). `preferences` (key map, UI scale, recent
+  /// scenes) come from `preferencesFile`, which the interactive window rewrites when it closes.
   SculptApp(GLFWwindow* window, const Options& options,
-            std::chrono::steady_clock::time_point started);
+            std::chrono::steady_clock::time_point started, LoadedPreferences preferences,
+            std::filesystem::path preferencesFile);
   ~SculptApp();
   SculptApp(const SculptApp&) = delete;
   SculptApp& operator=(const SculptApp&) = delete;
@@ -54,6 +57,7 @@ class SculptApp {
   void loadScene(const std::string& path);
   void applyUiScale();
   void reportFirstFrame();
+  void savePreferencesOnClose();
   float viewAspect() const;
 
   GLFWwindow* window_;
@@ -65,6 +69,8 @@ class SculptApp {
   Navigator navigator_;
   KeyMap keys_ = KeyMap::defaults();
   AppModel model_;
+  Preferences preferences_;
+  std::filesystem::path preferencesFile_;
   ViewRect lastView_{};
   int lastFbWidth_ = 0, lastFbHeight_ = 0;
   float cursorDepth_ = 1.0f;  ///< depth under the cursor in the last drawn frame

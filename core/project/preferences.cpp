@@ -96,7 +96,7 @@ LoadedPreferences loadPreferences(const std::filesystem::path& path) {
   FieldReader fields(root, problem);
   fields.read("keyMap", p.keyMap, [](const std::string&) { return true; });
   fields.read("uiScale", p.uiScale,
-              [](double s) { return std::isfinite(s) && s >= 0.25 && s <= 8; });
+              [](double s) { return s == 0.0 || (std::isfinite(s) && s >= 0.25 && s <= 8); });
   if (const auto it = root.find("window"); it != root.end()) {
     if (it->is_object()) {
       FieldReader window(*it, problem);

@@ -21,7 +21,7 @@ struct Preferences {
   static constexpr size_t kMaxRecentFiles = 10;
 
   std::string keyMap;  ///< opaque text owned by the app's key bindings
-  double uiScale = 1.0;
+  double uiScale = 0.0;  ///< the user's UI scale override; 0: from the monitor's content scale
   WindowGeometry window;
   std::vector<std::string> recentFiles;  ///< most recent first, no repeats, at most 10
 

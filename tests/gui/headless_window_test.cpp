@@ -54,7 +54,9 @@ class HeadlessWindow : public ::testing::Test {
   }
   void TearDown() override { fs::remove_all(dir_); }
   int run(const std::string& args) const {
-    const std::string command = kSculpt + " " + args + " > " + (dir_ / "out.txt").string() +
+    // Preferences go to the test's folder, never to the user's configuration.
+    const std::string command = "XDG_CONFIG_HOME=" + dir_.string() + " " + kSculpt + " " + args +
+                                " > " + (dir_ / "out.txt").string() +
                                 " 2> " + (dir_ / "err.txt").string();
     const int status = std::system(command.c_str());
     return WIFEXITED(status) ? WEXITSTATUS(status) : -1;
@@ -184,6 +186,26 @@ TEST_F(HeadlessWindow, WindowWithSimulationWorkerRunsAndQuits) {
   std::ifstream out(dir_ / "out.txt");
   const std::string text((std::istreambuf_iterator<char>(out)), std::istreambuf_iterator<char>());
   EXPECT_NE(text.find("first frame with the scene after"), std::string::npos) << text;
+}
+
+// The window remembers the user's things: after a session with a scene, the preferences file
+// lists the scene among the recent ones with the window's size; a damaged file does not stop
+// the window (defaults and a warning), and headless runs leave preferences alone.
+TEST_F(HeadlessWindow, WindowKeepsPreferencesAndSurvivesADamagedFile) {
+  const fs::path prefs = dir_ / "sculpt" / "preferences.json";
+  const std::string block = SCULPT_SOURCE_DIR "/assets/block3.json";
+  ASSERT_EQ(run("--headless --frames 2 --no-ui --size 320x200 --scene " + block +
+                " --screenshot " + (dir_ / "h.png").string()),
+            0);
+  EXPECT_FALSE(fs::exists(prefs));
+  ASSERT_EQ(run("--quit-after 0.5 --size 640x480 --scene " + block), 0);
+  ASSERT_TRUE(fs::exists(prefs));
+  std::ifstream in(prefs);
+  const std::string text((std::istreambuf_iterator<char>(in)), std::istreambuf_iterator<char>());
+  EXPECT_NE(text.find("block3.json"), std::string::npos) << text;
+  EXPECT_NE(text.find("\"width\": 640"), std::string::npos) << text;
+  std::ofstream(prefs) << "{\"format\": \"sculpt-preferences\", \"version\": 1, \"uiScale\": [";
+  EXPECT_EQ(run("--quit-after 0.5 --size 640x480 --scene " + block), 0);
 }
 
 TEST_F(HeadlessWindow, BadInputIsExit2) {

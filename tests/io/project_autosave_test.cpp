@@ -152,7 +152,7 @@ TEST_F(AutosaveTest, PreferencesRoundTripAndDamagedFilesGiveDefaults) {
   writeFileAtomically(path, R"({"format": "sculpt-preferences", "version": 1, "uiScale": "big",
                                 "recentFiles": ["/x.sculpt"]})");
   damaged = loadPreferences(path);
-  EXPECT_EQ(damaged.preferences.uiScale, 1.0);
+  EXPECT_EQ(damaged.preferences.uiScale, 0.0);  // the default: automatic
   EXPECT_EQ(damaged.preferences.recentFiles, std::vector<std::string>{"/x.sculpt"});
   EXPECT_NE(damaged.warning.find("uiScale"), std::string::npos) << damaged.warning;
 
