@@ -10,6 +10,7 @@ const char* const kUsage =
     "usage: sculpt [options]\n"
     "  --scene FILE           control mesh (.json) or surface (.obj, .gltf, .glb) to simulate;\n"
     "                         default: the Stanford bunny in a hexahedral cage\n"
+    "  --script FILE          replay a session script (docs/file-formats.md) on the scene\n"
     "  --level K              simulation level (1..3)\n"
     "  --method M             phong | linear | vertex | attribute\n"
     "  --field F              none | youngs | density | displacement | strain\n"
@@ -71,6 +72,8 @@ Options parseOptions(int argc, char** argv, bool* helpShown) {
     };
     if (arg == "--scene" || arg == "--surface") {
       options.scene = value();
+    } else if (arg == "--script") {
+      options.script = value();
     } else if (arg == "--level") {
       options.level = intIn(arg, value(), 1, 3);
     } else if (arg == "--method") {

@@ -14,6 +14,7 @@ namespace sculpt::app {
 
 struct Options {
   std::string scene;  ///< control mesh (.json) or surface (.obj/.gltf/.glb); empty: the bunny
+  std::string script;  ///< a session script to replay once the simulation runs
   std::optional<int> level;  ///< simulation level K
   DisplaySettings display;
   bool stylusPreset = false;

@@ -105,6 +105,14 @@ void SceneController::stepOnce() {
   simulationWake_.notify_one();
 }
 
+void SceneController::playScript(SessionScript script) {
+  {
+    const std::lock_guard lock(mutex_);
+    pendingScript_ = std::move(script);
+  }
+  simulationWake_.notify_one();
+}
+
 void SceneController::reset() {
   {
     const std::lock_guard lock(mutex_);
@@ -329,6 +337,7 @@ void SceneController::builderLoop() {
 bool SceneController::simulationIteration() {
   std::unique_ptr<ScenePhysics> retired;
   bool doReset = false, doStep = false, liveChanged = false;
+  std::optional<SessionScript> script;
   SceneSettings live;
   {
     const std::lock_guard lock(mutex_);
@@ -338,6 +347,7 @@ bool SceneController::simulationIteration() {
     }
     if (!physics_) return false;
     doReset = std::exchange(resetRequested_, false);
+    script = std::exchange(pendingScript_, std::nullopt);
     if (liveVersion_ != appliedLiveVersion_) {
       live = live_;
       appliedLiveVersion_ = liveVersion_;
@@ -351,6 +361,13 @@ bool SceneController::simulationIteration() {
   try {
     if (liveChanged) problem = physics_->applyLive(live);
     if (doReset) physics_->reset();
+    if (script) {
+      try {
+        physics_->playScript(*script);
+      } catch (const std::invalid_argument& e) {  // the scene goes on without the script
+        problem = std::string("the session script cannot be played: ") + e.what();
+      }
+    }
     if (doStep) physics_->step();
   } catch (const std::exception& e) {  // nothing the simulator is known to throw; stop calmly
     const std::lock_guard lock(mutex_);
@@ -359,7 +376,7 @@ bool SceneController::simulationIteration() {
     stepRequests_ = 0;
     return false;
   }
-  if (!doStep && !doReset && !liveChanged) return false;
+  if (!doStep && !doReset && !liveChanged && !script) return false;
   physics_->fillFrame(back_);
   const std::lock_guard lock(mutex_);
   if (!problem.empty()) status_.error = problem;
@@ -379,7 +396,7 @@ void SceneController::simulationLoop() {
       simulationWake_.wait(lock, [this] {
         return stop_.load() || readyPhysics_ ||
                (physics_ && (playing_ || stepRequests_ > 0 || resetRequested_ ||
-                             liveVersion_ != appliedLiveVersion_));
+                             pendingScript_ || liveVersion_ != appliedLiveVersion_));
       });
       if (stop_.load()) return;
     }
@@ -399,7 +416,7 @@ void SceneController::simulationLoop() {
     std::unique_lock lock(mutex_);
     simulationWake_.wait_until(lock, next, [this] {
       return stop_.load() || readyPhysics_ || stepRequests_ > 0 || resetRequested_ ||
-             liveVersion_ != appliedLiveVersion_;
+             (physics_ && pendingScript_) || liveVersion_ != appliedLiveVersion_;
     });
   }
 }

@@ -79,8 +79,11 @@ class SceneController {
   bool playing() const;
   /// One step while paused (or an extra one while playing).
   void stepOnce();
-  /// Back to rest: rest positions, zero velocity, time 0.
+  /// Back to rest: rest positions, zero velocity, time 0 (a script being replayed ends).
   void reset();
+  /// Replays a session script on the current scene from its next step (once its physics is
+  /// ready); an error (a grab point outside the solid) lands in buildStatus().error.
+  void playScript(SessionScript script);
   /// Level, cage or render level changes (against settings()) rebuild the scene of source()
   /// with load(); the rest applies live. Throws std::invalid_argument for invalid settings.
   void applySettings(const SceneSettings& settings);
@@ -146,6 +149,7 @@ class SceneController {
   bool playing_ = true;
   int stepRequests_ = 0;
   bool resetRequested_ = false;
+  std::optional<SessionScript> pendingScript_;
   SceneSettings live_;  // the caller's latest settings
   uint64_t liveVersion_ = 0;
   // Simulation thread only (or the caller's in non-threaded mode)

@@ -117,14 +117,20 @@ double ScenePhysics::simulatedTime() const { return simulator_->time() - timeOri
 
 StepReport ScenePhysics::step() {
   const auto start = std::chrono::steady_clock::now();
-  lastStep_ = simulator_->step();
+  lastStep_ = player_ ? player_->step() : simulator_->step();
   updateState();
   lastStepMs_ =
       std::chrono::duration<double, std::milli>(std::chrono::steady_clock::now() - start).count();
   return lastStep_;
 }
 
+void ScenePhysics::playScript(const SessionScript& script) {
+  player_.reset();  // the loads of a script in progress go first
+  player_ = std::make_unique<ScriptPlayer>(*simulator_, script);
+}
+
 void ScenePhysics::reset() {
+  player_.reset();  // its loads go with it
   const Points zero = Points::Zero(model_->numControlPoints(), 3);
   simulator_->setState(model_->restControl(), zero);
   timeOrigin_ = simulator_->time();
@@ -206,6 +212,11 @@ void ScenePhysics::fillFrame(SceneFrame& frame) const {
   frame.stepMs = lastStepMs_;
   frame.lastStep = lastStep_;
   frame.physicsReady = true;
+  frame.springs.clear();
+  if (player_)
+    for (size_t i = 0; i < player_->script().events.size(); ++i)
+      if (const PullTool* pull = player_->pullTool(i); pull && pull->active())
+        frame.springs.emplace_back(pull->pointPosition(), pull->target());
 }
 
 }  // namespace sculpt::app

@@ -15,6 +15,7 @@
 #include <Eigen/Core>
 
 #include "sculpt/scene_builder.h"
+#include "tools/session_script.h"
 #include "sim/fem_model.h"
 #include "sim/simulator.h"
 
@@ -34,6 +35,8 @@ struct SceneFrame {
   double stepMs = 0.0;         ///< wall time of the last step with this frame's update
   StepReport lastStep;
   bool physicsReady = false;   ///< false: the rest shape while phase 2 runs
+  /// Pull springs acting now (a session script's grabs): material point position and target.
+  std::vector<std::pair<Eigen::Vector3d, Eigen::Vector3d>> springs;
 };
 
 /// The rest frame of a geometry before its physics exists: rest nodes, identity gradients, rest
@@ -63,6 +66,9 @@ class ScenePhysics {
   StepReport step();
   /// Back to rest: rest positions, zero velocity, simulated time 0.
   void reset();
+  /// Replays a session script (core/tools/session_script.h) from now on, in place of one in
+  /// progress; reset() ends it. Throws std::invalid_argument when a grab point cannot be located.
+  void playScript(const SessionScript& script);
   /// Applies what can change live (material, integrator, time step, gravity). Returns a sentence
   /// when a setting is invalid (nothing is changed then).
   std::string applyLive(const SceneSettings& settings);
@@ -77,6 +83,7 @@ class ScenePhysics {
  private:
   ScenePhysics() = default;
   void setGravity(const Eigen::Vector3d& gravity);
+  std::unique_ptr<ScriptPlayer> player_;  ///< the session script being replayed, if any
   void updateState();          // nodes, gradients, strain energy from the simulator's state
   void updateMaterialFields();  // per-element mean E and density
 

@@ -31,6 +31,7 @@ const std::vector<float>* cellField(const SceneFrame& frame, FieldKind field) {
 
 const glm::vec3 kControlColour(0.95f, 0.85f, 0.30f);
 const glm::vec3 kPinnedColour(0.90f, 0.25f, 0.25f);
+const glm::vec3 kSpringColour(1.00f, 0.35f, 0.20f);
 
 }  // namespace
 
@@ -166,6 +167,22 @@ void SceneView::draw(const glm::mat4& view, const glm::mat4& projection,
     const render::LineList edges = render::edgeLines(cellEdges_, frame_.nodes);
     cells_.setLines(edges.xyz, edges.rgb);
     cells_.draw(view, projection, 1.0f);
+  }
+  if (!frame_.springs.empty()) {  // pull springs: from the material point to its target
+    render::LineList springs;
+    std::vector<float> ends, endColours;
+    for (const auto& [point, target] : frame_.springs) {
+      const glm::vec3 a(point.x(), point.y(), point.z()), b(target.x(), target.y(), target.z());
+      springs.addSegment(a, b, kSpringColour);
+      ends.insert(ends.end(), {a.x, a.y, a.z, b.x, b.y, b.z});
+      endColours.insert(endColours.end(), {kSpringColour.x, kSpringColour.y, kSpringColour.z,
+                                           kSpringColour.x, kSpringColour.y, kSpringColour.z});
+    }
+    springs_.setLines(springs.xyz, springs.rgb);
+    springs_.setPoints(ends, endColours);
+    glDisable(GL_DEPTH_TEST);  // the spring is a handle: always visible
+    springs_.draw(view, projection, 8.0f);
+    glEnable(GL_DEPTH_TEST);
   }
   if (display.showControlMesh && frame_.control.rows() == g.restControl.rows()) {
     const render::LineList edges = render::controlEdges(g.controlEdges, floats(frame_.control),

@@ -64,7 +64,7 @@ class SceneView {
   std::shared_ptr<const SceneGeometry> geometry_;
   SceneFrame frame_;
   std::unique_ptr<render::PhongGpuDeformer> deformer_;
-  render::LineRenderer grid_, axes_, controlMesh_, cells_;
+  render::LineRenderer grid_, axes_, controlMesh_, cells_, springs_;
   render::SliceRenderer slice_;
   std::vector<render::CellEdge> cellEdges_;  ///< level-K cell edges by element kind, per geometry
   InterpolationMethod uploadedMethod_ = InterpolationMethod::Phong;

@@ -18,6 +18,7 @@
 #include "sculpt/draw_benchmark.h"
 #include "sculpt/help_overlay.h"
 #include "sculpt/ui_scale.h"
+#include "tools/session_script.h"
 
 namespace sculpt::app {
 namespace {
@@ -101,6 +102,7 @@ SculptApp::SculptApp(GLFWwindow* window, const Options& options, Clock::time_poi
 
   if (!options.headless) controller_->setChangeNotifier([] { glfwPostEmptyEvent(); });
   controller_->load(sourceFor(options.scene), model_.settings);
+  if (!options.script.empty()) controller_->playScript(loadSessionScript(options.script));
   lastFrameTime_ = rateWindowStart_ = Clock::now();
   windowReadySeconds_ = secondsSince(started_);
 }

@@ -61,6 +61,11 @@ class HeadlessWindow : public ::testing::Test {
     const int status = std::system(command.c_str());
     return WIFEXITED(status) ? WEXITSTATUS(status) : -1;
   }
+  /// stderr of the last run.
+  std::string errors() const {
+    std::ifstream err(dir_ / "err.txt");
+    return {std::istreambuf_iterator<char>(err), std::istreambuf_iterator<char>()};
+  }
   fs::path dir_;
 };
 
@@ -219,9 +224,14 @@ TEST_F(HeadlessWindow, BadInputIsExit2) {
   const fs::path bad = dir_ / "bad.json";
   std::ofstream(bad) << "{\"format\": \"sculpt-control-mesh\", \"vertices\": [[0,0,";
   EXPECT_EQ(run("--headless --scene " + bad.string() + " --screenshot " + (dir_ / "y.png").string()), 2);
-  std::ifstream err(dir_ / "err.txt");
-  const std::string text((std::istreambuf_iterator<char>(err)), std::istreambuf_iterator<char>());
-  EXPECT_NE(text.find("bad.json"), std::string::npos) << text;
+  EXPECT_NE(errors().find("bad.json"), std::string::npos) << errors();
+  const fs::path script = dir_ / "script.json";
+  std::ofstream(script) << R"({"format": "sculpt-session", "version": 1, "events": [{"t": 0, "type": "grab"}]})";
+  EXPECT_EQ(run("--headless --script " + script.string() + " --screenshot " +
+                (dir_ / "z.png").string()),
+            2);
+  EXPECT_FALSE(fs::exists(dir_ / "z.png"));
+  EXPECT_NE(errors().find("script.json: events[0] (grab)"), std::string::npos) << errors();
 }
 
 }  // namespace
