@@ -105,6 +105,34 @@ void SceneController::stepOnce() {
   simulationWake_.notify_one();
 }
 
+void SceneController::grab(const Eigen::Vector3d& rest, const Eigen::Vector3d& target) {
+  {
+    const std::lock_guard lock(mutex_);
+    grabCommands_.push_back({GrabCommand::Grab, rest, target});
+  }
+  simulationWake_.notify_one();
+}
+
+void SceneController::moveGrab(const Eigen::Vector3d& target) {
+  {
+    const std::lock_guard lock(mutex_);
+    // Only the newest target of a drag matters.
+    if (!grabCommands_.empty() && grabCommands_.back().kind == GrabCommand::Move)
+      grabCommands_.back().target = target;
+    else
+      grabCommands_.push_back({GrabCommand::Move, Eigen::Vector3d::Zero(), target});
+  }
+  simulationWake_.notify_one();
+}
+
+void SceneController::releaseGrab() {
+  {
+    const std::lock_guard lock(mutex_);
+    grabCommands_.push_back({GrabCommand::Release, Eigen::Vector3d::Zero(), Eigen::Vector3d::Zero()});
+  }
+  simulationWake_.notify_one();
+}
+
 void SceneController::playScript(SessionScript script) {
   {
     const std::lock_guard lock(mutex_);
@@ -338,6 +366,7 @@ bool SceneController::simulationIteration() {
   std::unique_ptr<ScenePhysics> retired;
   bool doReset = false, doStep = false, liveChanged = false;
   std::optional<SessionScript> script;
+  std::vector<GrabCommand> grabs;
   SceneSettings live;
   {
     const std::lock_guard lock(mutex_);
@@ -348,6 +377,7 @@ bool SceneController::simulationIteration() {
     if (!physics_) return false;
     doReset = std::exchange(resetRequested_, false);
     script = std::exchange(pendingScript_, std::nullopt);
+    grabs = std::exchange(grabCommands_, {});
     if (liveVersion_ != appliedLiveVersion_) {
       live = live_;
       appliedLiveVersion_ = liveVersion_;
@@ -368,6 +398,15 @@ bool SceneController::simulationIteration() {
         problem = std::string("the session script cannot be played: ") + e.what();
       }
     }
+    for (const GrabCommand& command : grabs) {
+      if (command.kind == GrabCommand::Grab) {
+        if (!physics_->grab(command.rest, command.target)) problem = "nothing to grab there";
+      } else if (command.kind == GrabCommand::Move) {
+        physics_->moveGrab(command.target);
+      } else {
+        physics_->releaseGrab();
+      }
+    }
     if (doStep) physics_->step();
   } catch (const std::exception& e) {  // nothing the simulator is known to throw; stop calmly
     const std::lock_guard lock(mutex_);
@@ -376,7 +415,7 @@ bool SceneController::simulationIteration() {
     stepRequests_ = 0;
     return false;
   }
-  if (!doStep && !doReset && !liveChanged && !script) return false;
+  if (!doStep && !doReset && !liveChanged && !script && grabs.empty()) return false;
   physics_->fillFrame(back_);
   const std::lock_guard lock(mutex_);
   if (!problem.empty()) status_.error = problem;
@@ -396,7 +435,8 @@ void SceneController::simulationLoop() {
       simulationWake_.wait(lock, [this] {
         return stop_.load() || readyPhysics_ ||
                (physics_ && (playing_ || stepRequests_ > 0 || resetRequested_ ||
-                             pendingScript_ || liveVersion_ != appliedLiveVersion_));
+                             pendingScript_ || !grabCommands_.empty() ||
+                             liveVersion_ != appliedLiveVersion_));
       });
       if (stop_.load()) return;
     }
@@ -416,7 +456,8 @@ void SceneController::simulationLoop() {
     std::unique_lock lock(mutex_);
     simulationWake_.wait_until(lock, next, [this] {
       return stop_.load() || readyPhysics_ || stepRequests_ > 0 || resetRequested_ ||
-             (physics_ && pendingScript_) || liveVersion_ != appliedLiveVersion_;
+             (physics_ && (pendingScript_ || !grabCommands_.empty())) ||
+             liveVersion_ != appliedLiveVersion_;
     });
   }
 }

@@ -81,6 +81,11 @@ class SceneController {
   void stepOnce();
   /// Back to rest: rest positions, zero velocity, time 0 (a script being replayed ends).
   void reset();
+  /// The window's pull tool, applied on the simulation thread before its next step: grab the
+  /// material point at rest position `rest` towards `target`, move the target, let go.
+  void grab(const Eigen::Vector3d& rest, const Eigen::Vector3d& target);
+  void moveGrab(const Eigen::Vector3d& target);
+  void releaseGrab();
   /// Replays a session script on the current scene from its next step (once its physics is
   /// ready); an error (a grab point outside the solid) lands in buildStatus().error.
   void playScript(SessionScript script);
@@ -150,6 +155,11 @@ class SceneController {
   int stepRequests_ = 0;
   bool resetRequested_ = false;
   std::optional<SessionScript> pendingScript_;
+  struct GrabCommand {
+    enum Kind { Grab, Move, Release } kind;
+    Eigen::Vector3d rest, target;
+  };
+  std::vector<GrabCommand> grabCommands_;
   SceneSettings live_;  // the caller's latest settings
   uint64_t liveVersion_ = 0;
   // Simulation thread only (or the caller's in non-threaded mode)

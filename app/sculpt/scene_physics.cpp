@@ -1,5 +1,7 @@
 #include "sculpt/scene_physics.h"
 
+#include "sim/material_point.h"
+
 #include <chrono>
 #include <cmath>
 #include <limits>
@@ -124,6 +126,22 @@ StepReport ScenePhysics::step() {
   return lastStep_;
 }
 
+bool ScenePhysics::grab(const Eigen::Vector3d& rest, const Eigen::Vector3d& target) {
+  const std::optional<MaterialPoint> point = locateMaterialPoint(model_->mesh(), rest);
+  if (!point) return false;
+  if (!pull_) pull_ = std::make_unique<PullTool>(*simulator_);
+  pull_->grab(*point, target);
+  return true;
+}
+
+void ScenePhysics::moveGrab(const Eigen::Vector3d& target) {
+  if (pull_ && pull_->active()) pull_->moveTarget(target);
+}
+
+void ScenePhysics::releaseGrab() {
+  if (pull_ && pull_->active()) pull_->release();
+}
+
 void ScenePhysics::playScript(const SessionScript& script) {
   player_.reset();  // the loads of a script in progress go first
   player_ = std::make_unique<ScriptPlayer>(*simulator_, script);
@@ -131,6 +149,7 @@ void ScenePhysics::playScript(const SessionScript& script) {
 
 void ScenePhysics::reset() {
   player_.reset();  // its loads go with it
+  releaseGrab();
   const Points zero = Points::Zero(model_->numControlPoints(), 3);
   simulator_->setState(model_->restControl(), zero);
   timeOrigin_ = simulator_->time();
@@ -213,6 +232,7 @@ void ScenePhysics::fillFrame(SceneFrame& frame) const {
   frame.lastStep = lastStep_;
   frame.physicsReady = true;
   frame.springs.clear();
+  if (pull_ && pull_->active()) frame.springs.emplace_back(pull_->pointPosition(), pull_->target());
   if (player_)
     for (size_t i = 0; i < player_->script().events.size(); ++i)
       if (const PullTool* pull = player_->pullTool(i); pull && pull->active())

@@ -15,6 +15,7 @@
 #include <Eigen/Core>
 
 #include "sculpt/scene_builder.h"
+#include "tools/pull_tool.h"
 #include "tools/session_script.h"
 #include "sim/fem_model.h"
 #include "sim/simulator.h"
@@ -66,6 +67,11 @@ class ScenePhysics {
   StepReport step();
   /// Back to rest: rest positions, zero velocity, simulated time 0.
   void reset();
+  /// The pull tool of the window: grabs the material point at rest position `rest` with a
+  /// spring to `target` (false when no element holds it), moves the target, lets go.
+  bool grab(const Eigen::Vector3d& rest, const Eigen::Vector3d& target);
+  void moveGrab(const Eigen::Vector3d& target);
+  void releaseGrab();
   /// Replays a session script (core/tools/session_script.h) from now on, in place of one in
   /// progress; reset() ends it. Throws std::invalid_argument when a grab point cannot be located.
   void playScript(const SessionScript& script);
@@ -84,6 +90,7 @@ class ScenePhysics {
   ScenePhysics() = default;
   void setGravity(const Eigen::Vector3d& gravity);
   std::unique_ptr<ScriptPlayer> player_;  ///< the session script being replayed, if any
+  std::unique_ptr<PullTool> pull_;        ///< the window's pull tool (created on first use)
   void updateState();          // nodes, gradients, strain energy from the simulator's state
   void updateMaterialFields();  // per-element mean E and density
 

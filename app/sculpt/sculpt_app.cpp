@@ -10,6 +10,7 @@
 #include <ctime>
 #include <filesystem>
 #include <iostream>
+#include <limits>
 
 #include "render/image_downsample.h"
 #include "render/offscreen_target.h"
@@ -248,10 +249,43 @@ void SculptApp::handleInput(const ViewRect& view) {
   const int height = std::max(1, static_cast<int>(view.max.y - view.min.y));
   const PointerResult result = navigator_.update(input, camera_, width, height);
   if (result.cameraChanged || result.gesture != Gesture::None) sceneChanged_ = true;
+  pullStroke(result, input.x, input.y, width, height);
   if (result.setPivotRequested && !io.WantCaptureMouse) {
     if (const std::optional<glm::vec3> pivot =
             camera_.unproject(input.x, input.y, cursorDepth_, width, height))
       camera_.setPivot(*pivot);
+  }
+}
+
+void SculptApp::pullStroke(const PointerResult& stroke, float x, float y, int width, int height) {
+  // The pull tool: a stroke that starts on the surface grabs the material point under the cursor
+  // with a spring; the target then follows the cursor in the view plane at the grabbed depth.
+  if (stroke.strokeBegan && view_.hasGeometry() && cursorDepth_ < 1.0f) {
+    const std::optional<glm::vec3> hit = camera_.unproject(x, y, cursorDepth_, width, height);
+    if (hit) {
+      // The surface vertex nearest the hit, and its rest position inside the solid.
+      std::vector<float> positions, normals;
+      view_.deformer()->capture(positions, normals);
+      size_t nearest = 0;
+      float best = std::numeric_limits<float>::max();
+      for (size_t v = 0; 3 * v < positions.size(); ++v) {
+        const float d = glm::distance(*hit, glm::vec3(positions[3 * v], positions[3 * v + 1],
+                                                       positions[3 * v + 2]));
+        if (d < best) best = d, nearest = v;
+      }
+      const Eigen::Vector3d rest =
+          view_.geometry()->restPositions.row(static_cast<Eigen::Index>(nearest)).transpose();
+      controller_->grab(rest, Eigen::Vector3d(hit->x, hit->y, hit->z));
+      grabDepth_ = cursorDepth_;
+      grabbing_ = true;
+    }
+  } else if (stroke.strokeActive && grabbing_) {
+    if (const std::optional<glm::vec3> target = camera_.unproject(x, y, grabDepth_, width, height))
+      controller_->moveGrab(Eigen::Vector3d(target->x, target->y, target->z));
+  }
+  if (stroke.strokeEnded && grabbing_) {
+    controller_->releaseGrab();
+    grabbing_ = false;
   }
 }
 

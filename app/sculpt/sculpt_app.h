@@ -48,6 +48,7 @@ class SculptApp {
   void frame(int fbWidth, int fbHeight, bool interactive);
   void syncScene();
   void handleInput(const ViewRect& view);
+  void pullStroke(const PointerResult& stroke, float x, float y, int width, int height);
   void runAction(Action action);
   void carryOutRequests();
   void drawScene(const ViewRect& view, int fbWidth, int fbHeight, float pixelScale);
@@ -74,6 +75,8 @@ class SculptApp {
   ViewRect lastView_{};
   int lastFbWidth_ = 0, lastFbHeight_ = 0;
   float cursorDepth_ = 1.0f;  ///< depth under the cursor in the last drawn frame
+  float grabDepth_ = 1.0f;    ///< depth of the point grabbed by the pull tool
+  bool grabbing_ = false;
   float lastCursorX_ = 0.0f, lastCursorY_ = 0.0f;
   bool cameraFramed_ = false;
   bool firstFrameReported_ = false, physicsReported_ = false;

@@ -792,5 +792,27 @@ TEST(SceneControllerScript, GrabScriptPullsTheSolidAndResetEndsIt) {
   EXPECT_GT(pulledX, freeX + 0.05);
 }
 
+// The window's pull tool through the controller: grab the material point at a rest position,
+// drag the target, let go; the spring is published while it holds.
+TEST(SceneControllerScript, MouseGrabPullsWhileHeldAndLetsGo) {
+  SceneController controller(false);
+  controller.load(controlMesh("block3.json"), SceneSettings{});
+  controller.advance();
+  controller.grab(Eigen::Vector3d(1.5, 1.0, 1.5), Eigen::Vector3d(1.5, 1.0, 1.5));
+  for (int i = 0; i < 20; ++i) {
+    controller.moveGrab(Eigen::Vector3d(1.5 + 0.05 * (i + 1), 1.0, 1.5));  // a drag along +x
+    controller.advance();
+  }
+  SceneFrame frame = latest(controller);
+  ASSERT_EQ(frame.springs.size(), 1u);
+  EXPECT_EQ(frame.springs[0].second, Eigen::Vector3d(2.5, 1.0, 1.5));
+  EXPECT_GT(frame.springs[0].first.x(), 1.8);
+  controller.releaseGrab();
+  controller.advance();
+  frame = latest(controller);
+  EXPECT_TRUE(frame.springs.empty());
+  expectFinite(frame);
+}
+
 }  // namespace
 }  // namespace sculpt::app
