@@ -1,6 +1,6 @@
 #version 330 core
-// The embedded surface, already deformed (CPU path of the first window version): position and
-// normal per vertex, transformed to view space for lighting.
+// A surface from a static vertex buffer (render/surface_renderer: the benchmark's reference draw):
+// position and normal per vertex, transformed to view space for lighting.
 layout(location = 0) in vec3 position;
 layout(location = 1) in vec3 normal;
 

@@ -64,8 +64,7 @@ void SceneView::setGeometry(std::shared_ptr<const SceneGeometry> geometry) {
   cellEdges_ = render::distinctCellEdges(g.cellMesh, g.cellKind);
 
   // Until the first simulated state: the rest shape.
-  frame_ = restFrame(g, defaultSceneMaterial());
-  uploadDeformation(DisplaySettings{});
+  setFrame(restFrame(g, defaultSceneMaterial()), DisplaySettings{});
 }
 
 void SceneView::uploadDeformation(const DisplaySettings& display) {
@@ -85,6 +84,18 @@ void SceneView::uploadDeformation(const DisplaySettings& display) {
 void SceneView::setFrame(const SceneFrame& frame, const DisplaySettings& display) {
   if (!geometry_) return;
   frame_ = frame;
+  // Node displacements serve the colour range and the slice: once per frame.
+  displacements_.clear();
+  if (frame_.nodes.rows() == geometry_->cellMesh.positions.rows()) {
+    displacements_.resize(static_cast<size_t>(frame_.nodes.rows()));
+    for (Eigen::Index i = 0; i < frame_.nodes.rows(); ++i)
+      displacements_[static_cast<size_t>(i)] =
+          (frame_.nodes.row(i) - geometry_->cellMesh.positions.row(i)).norm();
+  }
+  upload(display);
+}
+
+void SceneView::upload(const DisplaySettings& display) {
   uploadDeformation(display);
   if (const std::vector<float>* values = cellField(frame_, display.field);
       values && values->size() == geometry_->cellMesh.numCells())
@@ -95,7 +106,7 @@ void SceneView::setFrame(const SceneFrame& frame, const DisplaySettings& display
 FieldRange SceneView::fieldRange(FieldKind field) const {
   FieldRange range;
   if (field == FieldKind::Displacement) {
-    const std::vector<double> d = nodeDisplacements();
+    const std::vector<double>& d = displacements_;
     range.low = 0.0f;
     range.high = d.empty() ? 0.0f : static_cast<float>(*std::max_element(d.begin(), d.end()));
   } else if (const std::vector<float>* values = cellField(frame_, field); values && !values->empty()) {
@@ -107,15 +118,6 @@ FieldRange SceneView::fieldRange(FieldKind field) const {
     range.low -= pad, range.high += pad;
   }
   return range;
-}
-
-std::vector<double> SceneView::nodeDisplacements() const {
-  std::vector<double> out;
-  if (!geometry_ || frame_.nodes.rows() != geometry_->cellMesh.positions.rows()) return out;
-  out.resize(static_cast<size_t>(frame_.nodes.rows()));
-  for (Eigen::Index i = 0; i < frame_.nodes.rows(); ++i)
-    out[static_cast<size_t>(i)] = (frame_.nodes.row(i) - geometry_->cellMesh.positions.row(i)).norm();
-  return out;
 }
 
 std::vector<double> SceneView::cellValues(FieldKind field) const {
@@ -136,7 +138,7 @@ void SceneView::draw(const glm::mat4& view, const glm::mat4& projection,
                      const DisplaySettings& display, FieldRange range) {
   if (!geometry_) return;
   const SceneGeometry& g = *geometry_;
-  if (display.method != uploadedMethod_ || display.field != uploadedField_) setFrame(frame_, display);
+  if (display.method != uploadedMethod_ || display.field != uploadedField_) upload(display);
   if (display.showGrid) grid_.draw(view, projection, 1.0f);
   if (display.showAxes) axes_.draw(view, projection, 1.0f);
 
@@ -157,7 +159,7 @@ void SceneView::draw(const glm::mat4& view, const glm::mat4& projection,
     // The cut through the deformed level-K cells, coloured by the field.
     const Eigen::Vector3d normal(plane.x, plane.y, plane.z);
     const std::vector<double> nodeValues =
-        display.field == FieldKind::Displacement ? nodeDisplacements() : std::vector<double>{};
+        display.field == FieldKind::Displacement ? displacements_ : std::vector<double>{};
     const std::vector<double> perCell = cellValues(display.field);
     const PlaneSlice slice = slicePlane(g.cellMesh, frame_.nodes, normal, plane.w, nodeValues, perCell);
     slice_.setSlice(slice);

@@ -59,10 +59,12 @@ class SceneView {
   void uploadDeformation(const DisplaySettings& display);
   glm::vec4 clipPlane(const DisplaySettings& display) const;
   std::vector<double> cellValues(FieldKind field) const;
-  std::vector<double> nodeDisplacements() const;
+  /// Uploads what `display` needs of the current frame (method, cell field).
+  void upload(const DisplaySettings& display);
 
   std::shared_ptr<const SceneGeometry> geometry_;
   SceneFrame frame_;
+  std::vector<double> displacements_;  ///< per node |x - X| of frame_
   std::unique_ptr<render::PhongGpuDeformer> deformer_;
   render::LineRenderer grid_, axes_, controlMesh_, cells_, springs_;
   render::SliceRenderer slice_;
