@@ -17,6 +17,7 @@
 #include "cli/fem_options.h"
 #include "io/control_mesh_json.h"
 #include "sim/standard_forms.h"
+#include "tools/script_topology.h"
 #include "tools/session_script.h"
 
 namespace sculpt::cli {
@@ -37,7 +38,9 @@ const char* const kSimulateUsage =
     "      --script replays a session script (docs/file-formats.md) while stepping: grabs,\n"
     "      inflation, paint and pins at their times; each event's start and end go to\n"
     "      stderr. With --script, --steps defaults to the script's length. A malformed\n"
-    "      script is one error line naming the event and field (exit 2).\n";
+    "      script is one error line naming the event and field (exit 2). Topology events\n"
+    "      (t = 0) edit CONTROL in file order before the model is built, so the run starts\n"
+    "      from the edited rest shape; one that cannot be applied is an error (exit 2).\n";
 
 namespace {
 
@@ -140,7 +143,20 @@ int simulateCommand(const CliArgs& args, std::string& file) {
   file = args.positional()[0];
   const std::optional<LoadedMesh> loaded = loadValidControlMesh(file);
   if (!loaded) return kExitBadInput;
-  std::optional<FemModel> model = buildFemModel(loaded->mesh, options.setup, file);
+  CellComplex control = loaded->mesh;
+  if (script) {
+    const size_t events = script->events.size();
+    try {
+      control = applyTopologyEvents(control, *script);
+    } catch (const std::invalid_argument& e) {
+      return printError(args.requiredValue("script") + ": " + e.what());
+    }
+    if (script->events.size() != events)
+      std::cerr << "simulate: script: " << events - script->events.size()
+                << " topology events applied: " << control.numCells() << " cells, "
+                << control.numVertices() << " control points\n";
+  }
+  std::optional<FemModel> model = buildFemModel(control, options.setup, file);
   if (!model) return kExitBadInput;
 
   Simulator simulator(*model);

@@ -15,6 +15,7 @@
 #include "sculpt/navigation.h"
 #include "sculpt/scene_controller.h"
 #include "sculpt/scene_view.h"
+#include "sculpt/tool_state.h"
 
 namespace sculpt::app {
 
@@ -31,8 +32,23 @@ struct Requests {
   std::optional<render::StandardView> standardView;
   bool togglePlay = false, stepOnce = false, reset = false;
   bool applySettings = false;  ///< the edited SceneSettings (rebuilds when needed)
-  std::string loadScene;       ///< a path to load; empty: none
+  std::string loadScene;       ///< a path to load (a scene or a .sculpt project); empty: none
   bool cancelBuild = false, quit = false, uiScaleChanged = false;
+  // Edit history and files (document.h)
+  bool undo = false, redo = false, save = false;
+  std::string saveAs;            ///< a path to save the project to; empty: none
+  bool closeSave = false, closeDiscard = false;  ///< answers to the unsaved-changes prompt
+  bool recover = false, discardRecovery = false;  ///< answers to the recovery offer
+};
+
+/// The document as the panels show it (document.h keeps the real state).
+struct DocumentStatus {
+  std::string title = "untitled";  ///< with " *" when there are unsaved changes
+  bool dirty = false, hasPath = false;
+  bool canUndo = false, canRedo = false;
+  std::string undoLabel, redoLabel;
+  std::string recoveryOffer;  ///< a recovery file to offer after a crash; empty: none
+  bool closePrompt = false;   ///< the window is closing with unsaved changes
 };
 
 /// Figures for the status strip.
@@ -66,6 +82,12 @@ struct AppModel {
   float uiScale = 1.0f;
   std::vector<Toast> toasts;
   Requests requests;
+  ToolState tools;
+  DocumentStatus document;
+  std::array<char, 1024> saveAsInput{};
+  bool openSaveAsDialog = false;  ///< Ctrl+Shift+S, or Save of an untitled project (next frame)
+  /// The topology tool's face selection and hover, as "cell c, face f" for the panel.
+  std::string topologySelection;
 
   void toast(std::string text, bool error = false, double seconds = 4.0) {
     toasts.push_back({std::move(text),

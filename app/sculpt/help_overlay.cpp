@@ -86,6 +86,7 @@ void drawHelpOverlay(const KeyMap& keys, NavigationPreset preset, bool* open) {
     // window collapse to a few pixels in ImGui 1.86.
     ImGui::BeginGroup();
     drawGroup(keys, ActionGroup::View);
+    drawGroup(keys, ActionGroup::Edit);
     ImGui::EndGroup();
     ImGui::SameLine(0.0f, 3.0f * ImGui::GetStyle().ItemSpacing.x);
     ImGui::BeginGroup();

@@ -53,6 +53,14 @@ constexpr std::array<ActionInfo, kActionCount> kActions{{
     {Action::CycleField, "cycle_field", "Next colour field", ActionGroup::Display},
     {Action::CycleDeformation, "cycle_deformation", "Next deformation method",
      ActionGroup::Display},
+    {Action::Undo, "undo", "Undo", ActionGroup::Edit},
+    {Action::Redo, "redo", "Redo", ActionGroup::Edit},
+    {Action::RedoAlternative, "redo_alternative", "Redo", ActionGroup::Edit},
+    {Action::BrushSmaller, "brush_smaller", "Smaller brush (F + drag: radius)", ActionGroup::Edit},
+    {Action::BrushLarger, "brush_larger", "Larger brush (Shift+F + drag: strength)",
+     ActionGroup::Edit},
+    {Action::Save, "save", "Save the project", ActionGroup::File},
+    {Action::SaveAs, "save_as", "Save the project as", ActionGroup::File},
     {Action::ToggleHelp, "toggle_help", "This help", ActionGroup::File},
     {Action::Screenshot, "screenshot", "Save a screenshot", ActionGroup::File},
     {Action::Quit, "quit", "Quit", ActionGroup::File},
@@ -190,6 +198,8 @@ std::string_view actionGroupLabel(ActionGroup group) {
       return "Simulation";
     case ActionGroup::Display:
       return "Display";
+    case ActionGroup::Edit:
+      return "Edit and brushes";
     case ActionGroup::File:
       return "File and window";
   }
@@ -271,7 +281,15 @@ KeyMap KeyMap::defaults() {
   bind(GLFW_KEY_C, kShift, Action::ToggleSlice);
   bind(GLFW_KEY_V, kNone, Action::CycleField);
   bind(GLFW_KEY_D, kNone, Action::CycleDeformation);
+  // Edit and brushes
+  bind(GLFW_KEY_Z, kCtrl, Action::Undo);
+  bind(GLFW_KEY_Z, kCtrl | kShift, Action::Redo);
+  bind(GLFW_KEY_Y, kCtrl, Action::RedoAlternative);
+  bind(GLFW_KEY_LEFT_BRACKET, kNone, Action::BrushSmaller);
+  bind(GLFW_KEY_RIGHT_BRACKET, kNone, Action::BrushLarger);
   // File and window
+  bind(GLFW_KEY_S, kCtrl, Action::Save);
+  bind(GLFW_KEY_S, kCtrl | kShift, Action::SaveAs);
   bind(GLFW_KEY_SLASH, kShift, Action::ToggleHelp);  // '?'
   bind(GLFW_KEY_F1, kNone, Action::ToggleHelp);
   bind(GLFW_KEY_F12, kNone, Action::Screenshot);

@@ -56,7 +56,15 @@ enum class Action {
   ToggleSlice,
   CycleField,
   CycleDeformation,
+  // Edit and brushes
+  Undo,
+  Redo,
+  RedoAlternative,
+  BrushSmaller,
+  BrushLarger,
   // File and window
+  Save,
+  SaveAs,
   ToggleHelp,
   Screenshot,
   Quit,
@@ -64,7 +72,7 @@ enum class Action {
 inline constexpr int kActionCount = static_cast<int>(Action::Quit) + 1;
 
 /// The groups of the help overlay.
-enum class ActionGroup { View, Simulation, Display, File };
+enum class ActionGroup { View, Simulation, Display, Edit, File };
 
 /// Stable snake_case name for files ("view_back"), human label ("Back view"), group.
 std::string_view actionName(Action action);

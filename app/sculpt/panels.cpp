@@ -5,6 +5,7 @@
 #include <string>
 
 #include "sculpt/colour_bar.h"
+#include "sculpt/tool_panel.h"
 
 namespace sculpt::app {
 namespace {
@@ -21,9 +22,13 @@ float scaled(float pixels) { return pixels * ImGui::GetFontSize() / 13.0f; }
 void menuBar(AppModel& m) {
   if (!ImGui::BeginMainMenuBar()) return;
   Requests& r = m.requests;
+  bool openSaveAs = false;
   if (ImGui::BeginMenu("File")) {
-    if (ImGui::MenuItem("Load default scene (bunny)")) r.loadScene = "<default>";
-    if (ImGui::BeginMenu("Recent scenes", !m.recentScenes.empty())) {
+    if (ImGui::MenuItem("New (default bunny)")) r.loadScene = "<default>";
+    if (ImGui::MenuItem("Save", "Ctrl+S")) r.save = true;
+    if (ImGui::MenuItem("Save As...", "Ctrl+Shift+S")) openSaveAs = true;
+    ImGui::Separator();
+    if (ImGui::BeginMenu("Recent files", !m.recentScenes.empty())) {
       for (const std::string& path : m.recentScenes)
         if (ImGui::MenuItem(path.c_str())) r.loadScene = path;
       ImGui::EndMenu();
@@ -41,6 +46,12 @@ void menuBar(AppModel& m) {
     }
     ImGui::Separator();
     if (ImGui::MenuItem("Quit", "Ctrl+Q")) r.quit = true;
+    ImGui::EndMenu();
+  }
+  if (ImGui::BeginMenu("Edit")) {
+    const std::string undo = "Undo " + m.document.undoLabel, redo = "Redo " + m.document.redoLabel;
+    if (ImGui::MenuItem(undo.c_str(), "Ctrl+Z", false, m.document.canUndo)) r.undo = true;
+    if (ImGui::MenuItem(redo.c_str(), "Ctrl+Shift+Z", false, m.document.canRedo)) r.redo = true;
     ImGui::EndMenu();
   }
   if (ImGui::BeginMenu("View")) {
@@ -73,7 +84,74 @@ void menuBar(AppModel& m) {
     if (ImGui::MenuItem("Keys and mouse", "F1")) m.showHelp = true;
     ImGui::EndMenu();
   }
+  // The window title is the document's; the menu bar repeats it for full-screen use.
+  const std::string title = m.document.title;
+  ImGui::SetCursorPosX(ImGui::GetWindowWidth() - ImGui::CalcTextSize(title.c_str()).x - scaled(12));
+  ImGui::TextDisabled("%s", title.c_str());
   ImGui::EndMainMenuBar();
+  if (openSaveAs || m.openSaveAsDialog) {
+    m.openSaveAsDialog = false;
+    ImGui::OpenPopup("Save project as");
+  }
+}
+
+// Modal dialogs: Save As (a path), unsaved changes on close, recovery after a crash.
+void dialogs(AppModel& m) {
+  Requests& r = m.requests;
+  const ImVec2 centre = ImGui::GetMainViewport()->GetCenter();
+  ImGui::SetNextWindowPos(centre, ImGuiCond_Appearing, ImVec2(0.5f, 0.5f));
+  if (ImGui::BeginPopupModal("Save project as", nullptr, ImGuiWindowFlags_AlwaysAutoResize)) {
+    ImGui::TextUnformatted("File (.sculpt):");
+    ImGui::SetNextItemWidth(scaled(420));
+    if (ImGui::IsWindowAppearing()) ImGui::SetKeyboardFocusHere();
+    const bool entered = ImGui::InputText("##saveas", m.saveAsInput.data(), m.saveAsInput.size(),
+                                          ImGuiInputTextFlags_EnterReturnsTrue);
+    if ((ImGui::Button("Save") || entered) && m.saveAsInput[0] != 0) {
+      r.saveAs = std::string(m.saveAsInput.data());
+      ImGui::CloseCurrentPopup();
+    }
+    ImGui::SameLine();
+    if (ImGui::Button("Cancel")) ImGui::CloseCurrentPopup();
+    ImGui::EndPopup();
+  }
+  if (m.document.closePrompt) ImGui::OpenPopup("Unsaved changes");
+  ImGui::SetNextWindowPos(centre, ImGuiCond_Appearing, ImVec2(0.5f, 0.5f));
+  if (ImGui::BeginPopupModal("Unsaved changes", nullptr, ImGuiWindowFlags_AlwaysAutoResize)) {
+    ImGui::Text("Save changes to %s before closing?", m.document.title.c_str());
+    if (ImGui::Button("Save")) {
+      r.closeSave = true;
+      m.document.closePrompt = false;
+      ImGui::CloseCurrentPopup();
+    }
+    ImGui::SameLine();
+    if (ImGui::Button("Don't save")) {
+      r.closeDiscard = true;
+      m.document.closePrompt = false;
+      ImGui::CloseCurrentPopup();
+    }
+    ImGui::SameLine();
+    if (ImGui::Button("Cancel")) {
+      m.document.closePrompt = false;
+      ImGui::CloseCurrentPopup();
+    }
+    ImGui::EndPopup();
+  }
+  if (!m.document.recoveryOffer.empty()) ImGui::OpenPopup("Recover unsaved work?");
+  ImGui::SetNextWindowPos(centre, ImGuiCond_Appearing, ImVec2(0.5f, 0.5f));
+  if (ImGui::BeginPopupModal("Recover unsaved work?", nullptr, ImGuiWindowFlags_AlwaysAutoResize)) {
+    ImGui::Text("The program did not close cleanly. Autosaved work was found:\n%s",
+                m.document.recoveryOffer.c_str());
+    if (ImGui::Button("Recover")) {
+      r.recover = true;
+      ImGui::CloseCurrentPopup();
+    }
+    ImGui::SameLine();
+    if (ImGui::Button("Discard")) {
+      r.discardRecovery = true;
+      ImGui::CloseCurrentPopup();
+    }
+    ImGui::EndPopup();
+  }
 }
 
 void toolPanel(AppModel& m, ImVec2 pos, ImVec2 size) {
@@ -81,6 +159,8 @@ void toolPanel(AppModel& m, ImVec2 pos, ImVec2 size) {
   ImGui::SetNextWindowSize(size);
   ImGui::Begin("Tools", nullptr, kPanelFlags);
   Requests& r = m.requests;
+  drawToolSettings(m);
+  ImGui::Separator();
   ImGui::TextDisabled("Navigate");
   int preset = m.preset == NavigationPreset::Stylus ? 1 : 0;
   ImGui::RadioButton("Blender mouse", &preset, 0);
@@ -242,11 +322,12 @@ void bottomStrip(AppModel& m, ImVec2 pos, ImVec2 size) {
 
 ViewRect drawPanels(AppModel& m) {
   menuBar(m);
+  dialogs(m);
   const ImGuiViewport* viewport = ImGui::GetMainViewport();
   ImVec2 min = viewport->WorkPos;
   ImVec2 max(viewport->WorkPos.x + viewport->WorkSize.x, viewport->WorkPos.y + viewport->WorkSize.y);
   if (!m.showPanels) return {min, max};
-  const float left = std::min(scaled(170), 0.2f * viewport->WorkSize.x);
+  const float left = std::min(scaled(220), 0.25f * viewport->WorkSize.x);
   const float right = std::min(scaled(320), 0.35f * viewport->WorkSize.x);
   const float bottom = ImGui::GetFrameHeightWithSpacing() + 2 * ImGui::GetStyle().WindowPadding.y;
   toolPanel(m, min, ImVec2(left, max.y - min.y - bottom));

@@ -61,6 +61,12 @@ SurfaceMesh controlMeshSurface(const CellComplex& control, const Topology& topol
   return catmullClarkRefine(boundary.surface, levels, true, tags);
 }
 
+void throwIfInvalid(const CellComplex& control, const std::string& name) {
+  for (const ValidationIssue& issue : validate(control))
+    if (issue.severity == ValidationIssue::Severity::Error)
+      throw std::runtime_error(name + " is not a valid control mesh: " + issue.message);
+}
+
 double meanEdgeLength(const CellComplex& complex, const Topology& topology) {
   double sum = 0.0;
   for (const auto& [a, b] : topology.edgeVertices)
@@ -159,18 +165,15 @@ std::optional<SceneBuildPhase1> buildPhase1(const SceneSource& source,
 
   // Surface and control mesh
   SourceShape shape;
+  const std::string sourceName = source.path.empty() ? "the project" : fileName(source.path);
   if (source.kind == SceneKind::ControlMesh) {
     CellComplex control;
     try {
-      control = loadControlMeshJson(source.path);
+      control = source.project ? source.project->controlMesh : loadControlMeshJson(source.path);
     } catch (const std::exception& e) {
       throw std::runtime_error(std::string("cannot load the control mesh ") + e.what());
     }
-    const std::vector<ValidationIssue> issues = validate(control);
-    for (const ValidationIssue& issue : issues)
-      if (issue.severity == ValidationIssue::Severity::Error)
-        throw std::runtime_error(fileName(source.path) + " is not a valid control mesh: " +
-                                 issue.message);
+    throwIfInvalid(control, sourceName);
     clock.lap("read");
     BuildStage refine(progress, 0.01, 0.04, "refining the surface");
     if (!refine.start()) return std::nullopt;
@@ -178,7 +181,7 @@ std::optional<SceneBuildPhase1> buildPhase1(const SceneSource& source,
     shape.display = controlMeshSurface(control, topology, settings.renderLevel);
     shape.cellSize = meanEdgeLength(control, topology);
     shape.control = std::move(control);
-    shape.description = fileName(source.path) + ", surface at Catmull-Clark level " +
+    shape.description = sourceName + ", surface at Catmull-Clark level " +
                         std::to_string(settings.renderLevel);
     clock.lap("refine");
   } else {
@@ -193,14 +196,23 @@ std::optional<SceneBuildPhase1> buildPhase1(const SceneSource& source,
     // the coarse surface (the margin covers the difference).
     shape.display = bunny ? loopRefine(surface, 3, true) : surface;
     clock.lap("refine");
-    BuildStage cage(progress, 0.04, 0.05, "building the cage");
-    if (!cage.start()) return std::nullopt;
-    Cage built = cageAround(surface, settings, path);
-    shape.cellSize = built.cellSize;
-    shape.control = std::move(built.control);
-    shape.description = fileName(path) + " in a " + std::to_string(built.gridSize[0]) + "x" +
-                        std::to_string(built.gridSize[1]) + "x" + std::to_string(built.gridSize[2]) +
-                        " cage of " + std::to_string(shape.control.numCells()) + " cells";
+    if (source.project) {  // the user's (possibly edited) cage
+      shape.control = source.project->controlMesh;
+      throwIfInvalid(shape.control, sourceName);
+      shape.cellSize = meanEdgeLength(shape.control, buildTopology(shape.control));
+      shape.description = fileName(path) + " in a cage of " +
+                          std::to_string(shape.control.numCells()) + " cells";
+    } else {
+      BuildStage cage(progress, 0.04, 0.05, "building the cage");
+      if (!cage.start()) return std::nullopt;
+      Cage built = cageAround(surface, settings, path);
+      shape.cellSize = built.cellSize;
+      shape.control = std::move(built.control);
+      shape.description = fileName(path) + " in a " + std::to_string(built.gridSize[0]) + "x" +
+                          std::to_string(built.gridSize[1]) + "x" +
+                          std::to_string(built.gridSize[2]) + " cage of " +
+                          std::to_string(shape.control.numCells()) + " cells";
+    }
     clock.lap("cage");
   }
   geometry->restPositions = shape.display.positions;
@@ -256,10 +268,17 @@ std::optional<SceneBuildPhase1> buildPhase1(const SceneSource& source,
   const Topology& controlTopology = subdivision->topologies.front();
   geometry->restControl = shape.control.positions;
   geometry->controlEdges = controlTopology.edgeVertices;
-  const double top = shape.control.positions.col(1).maxCoeff();
-  geometry->pinned.resize(shape.control.numVertices());
-  for (uint32_t v = 0; v < shape.control.numVertices(); ++v)
-    geometry->pinned[v] = shape.control.positions(v, 1) >= top - 0.5 * shape.cellSize;
+  geometry->pinned.assign(shape.control.numVertices(), 0);
+  if (source.project) {
+    for (const uint32_t v : source.project->pins)
+      if (v < geometry->pinned.size()) geometry->pinned[v] = 1;
+  } else {
+    const double top = shape.control.positions.col(1).maxCoeff();
+    for (uint32_t v = 0; v < shape.control.numVertices(); ++v)
+      geometry->pinned[v] = shape.control.positions(v, 1) >= top - 0.5 * shape.cellSize;
+  }
+  solid->project = source.project;
+  geometry->controlMesh = std::make_shared<const CellComplex>(shape.control);
   solid->control = std::move(shape.control);
   solid->cellSize = shape.cellSize;
   geometry->description = shape.description + ", level " + std::to_string(settings.level);
@@ -277,7 +296,8 @@ std::optional<SceneBuildPhase1> buildSceneGeometry(const SceneSource& source,
     return buildPhase1(source, settings, sceneId, progress);
   } catch (const std::exception& e) {
     // Every failure names the file it concerns.
-    const std::string name = fileName(bunnyPath(source));
+    const std::string path = bunnyPath(source);
+    const std::string name = path.empty() ? std::string("the project") : fileName(path);
     if (std::string(e.what()).find(name) != std::string::npos) throw;
     throw std::runtime_error(name + ": " + e.what());
   }

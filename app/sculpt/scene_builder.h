@@ -13,7 +13,8 @@
 //    Catmull–Clark refined to renderLevel onto the limit (with its crease and corner tags); the
 //    solid is the control mesh itself.
 // The control points of the top layer (within half a cell of the highest one, along y) are
-// pinned, and gravity pulls along -y: the bunny hangs by its ears and moves at once.
+// pinned, and gravity pulls along -y: the bunny hangs by its ears and moves at once. A source
+// with a project takes its control mesh, pins and materials from the project instead.
 
 #include <array>
 #include <cstdint>
@@ -31,6 +32,7 @@
 #include "fem/material.h"
 #include "mesh/cell_complex.h"
 #include "mesh/volume_mesh.h"
+#include "project/project.h"
 #include "sim/simulator.h"
 #include "util/progress.h"
 
@@ -39,8 +41,16 @@ namespace sculpt::app {
 enum class SceneKind { DefaultBunny, ImportedSurface, ControlMesh };
 
 struct SceneSource {
+  SceneSource() = default;
+  SceneSource(SceneKind kind_, std::string path_, std::shared_ptr<const Project> project_ = nullptr)
+      : kind(kind_), path(std::move(path_)), project(std::move(project_)) {}
+
   SceneKind kind = SceneKind::DefaultBunny;
   std::string path;  ///< the surface or control-mesh file; DefaultBunny: empty for assets/bunny.obj
+  /// The user's work (an edited or opened project): when set, its control mesh, pins and painted
+  /// materials replace the cage or file's and the top-layer pins. The drawn surface still comes
+  /// from `kind` and `path` (ControlMesh: the boundary of the project's control mesh).
+  std::shared_ptr<const Project> project;
 };
 
 /// Timings of a build, in order: stage name and milliseconds (steady clock).
@@ -94,6 +104,8 @@ struct SceneGeometry {
   Points restControl;
   std::vector<std::array<uint32_t, 2>> controlEdges;
   std::vector<uint8_t> pinned;
+  /// The control mesh itself: what the user's project starts from and topology tools edit.
+  std::shared_ptr<const CellComplex> controlMesh;
 
   StageTimes stageMs;       ///< phase 1 stages
   std::string description;  ///< e.g. "bunny.obj in a 6-cell cage, level 1"
@@ -106,6 +118,8 @@ struct SceneSolid {
   SolidCellMesh centres;
   NodeGradientStencil stencil;  ///< node positions -> node gradients (Phong deformation)
   double cellSize = 0.0;        ///< cage cell side, or the mean control edge length
+  /// The project the scene was built from (SceneSource::project), for its painted materials.
+  std::shared_ptr<const Project> project;
 };
 
 struct SceneBuildPhase1 {

@@ -108,7 +108,7 @@ void SceneController::stepOnce() {
 void SceneController::grab(const Eigen::Vector3d& rest, const Eigen::Vector3d& target) {
   {
     const std::lock_guard lock(mutex_);
-    grabCommands_.push_back({GrabCommand::Grab, rest, target});
+    grabCommands_.push_back({GrabCommand::Grab, rest, target, false});
   }
   simulationWake_.notify_one();
 }
@@ -120,15 +120,15 @@ void SceneController::moveGrab(const Eigen::Vector3d& target) {
     if (!grabCommands_.empty() && grabCommands_.back().kind == GrabCommand::Move)
       grabCommands_.back().target = target;
     else
-      grabCommands_.push_back({GrabCommand::Move, Eigen::Vector3d::Zero(), target});
+      grabCommands_.push_back({GrabCommand::Move, Eigen::Vector3d::Zero(), target, false});
   }
   simulationWake_.notify_one();
 }
 
-void SceneController::releaseGrab() {
+void SceneController::releaseGrab(bool keep) {
   {
     const std::lock_guard lock(mutex_);
-    grabCommands_.push_back({GrabCommand::Release, Eigen::Vector3d::Zero(), Eigen::Vector3d::Zero()});
+    grabCommands_.push_back({GrabCommand::Release, Eigen::Vector3d::Zero(), Eigen::Vector3d::Zero(), keep});
   }
   simulationWake_.notify_one();
 }
@@ -362,11 +362,107 @@ void SceneController::builderLoop() {
 // ---------------------------------------------------------------------------------------------
 // Simulation
 
+void SceneController::paint(const Eigen::Vector3d& centre, const MaterialBrushSettings& brush) {
+  queuePhysicsCommand([centre, brush](ScenePhysics& physics) {
+    try {
+      physics.paint(centre, brush);
+    } catch (const std::invalid_argument& e) {
+      return std::string("cannot paint: ") + e.what();
+    }
+    return std::string();
+  });
+}
+
+void SceneController::pin(const Eigen::Vector3d& centre, double radius, bool pin) {
+  queuePhysicsCommand([centre, radius, pin](ScenePhysics& physics) {
+    physics.pin(centre, radius, pin);
+    return std::string();
+  });
+}
+
+void SceneController::pressInflate(const Eigen::Vector3d& centre, double radius, double pressure) {
+  queuePhysicsCommand([centre, radius, pressure](ScenePhysics& physics) {
+    try {
+      physics.pressInflate(centre, radius, pressure);
+    } catch (const std::invalid_argument& e) {
+      return std::string("cannot inflate: ") + e.what();
+    }
+    return std::string();
+  });
+}
+
+void SceneController::releaseInflate() {
+  queuePhysicsCommand([](ScenePhysics& physics) {
+    physics.releaseInflate();
+    return std::string();
+  });
+}
+
+void SceneController::grabCurve(std::vector<Eigen::Vector3d> polyline, bool smooth) {
+  queuePhysicsCommand([polyline = std::move(polyline), smooth](ScenePhysics& physics) {
+    try {
+      physics.grabCurve(polyline, smooth);
+    } catch (const std::invalid_argument& e) {
+      return std::string("cannot grab the curve: ") + e.what();
+    }
+    return std::string();
+  });
+}
+
+void SceneController::dragCurve(const Eigen::Vector3d& offset) {
+  queuePhysicsCommand([offset](ScenePhysics& physics) {
+    physics.dragCurve(offset);
+    return std::string();
+  });
+}
+
+void SceneController::releaseCurve() {
+  queuePhysicsCommand([](ScenePhysics& physics) {
+    physics.releaseCurve();
+    return std::string();
+  });
+}
+
+void SceneController::restoreEdits(MaterialSamples samples, std::vector<uint32_t> pins) {
+  queuePhysicsCommand([this, samples = std::move(samples), pins = std::move(pins)](ScenePhysics& physics) {
+    Material uniform;
+    {
+      const std::lock_guard lock(mutex_);
+      uniform = live_.material;
+    }
+    const std::string problem = physics.restoreEdits(samples, pins, uniform);
+    return problem.empty() ? problem : "cannot restore the edit: " + problem;
+  });
+}
+
+void SceneController::requestEdits() {
+  queuePhysicsCommand([this](ScenePhysics& physics) {
+    Edits edits{physics.geometry().sceneId, physics.captureMaterialSamples(), physics.pinnedPoints()};
+    const std::lock_guard lock(mutex_);
+    capturedEdits_ = std::move(edits);
+    return std::string();
+  });
+}
+
+std::optional<SceneController::Edits> SceneController::takeEdits() {
+  const std::lock_guard lock(mutex_);
+  return std::exchange(capturedEdits_, std::nullopt);
+}
+
+void SceneController::queuePhysicsCommand(std::function<std::string(ScenePhysics&)> command) {
+  {
+    const std::lock_guard lock(mutex_);
+    physicsCommands_.push_back(std::move(command));
+  }
+  simulationWake_.notify_all();
+}
+
 bool SceneController::simulationIteration() {
   std::unique_ptr<ScenePhysics> retired;
   bool doReset = false, doStep = false, liveChanged = false;
   std::optional<SessionScript> script;
   std::vector<GrabCommand> grabs;
+  std::vector<std::function<std::string(ScenePhysics&)>> commands;
   SceneSettings live;
   {
     const std::lock_guard lock(mutex_);
@@ -378,6 +474,7 @@ bool SceneController::simulationIteration() {
     doReset = std::exchange(resetRequested_, false);
     script = std::exchange(pendingScript_, std::nullopt);
     grabs = std::exchange(grabCommands_, {});
+    commands = std::exchange(physicsCommands_, {});
     if (liveVersion_ != appliedLiveVersion_) {
       live = live_;
       appliedLiveVersion_ = liveVersion_;
@@ -404,9 +501,11 @@ bool SceneController::simulationIteration() {
       } else if (command.kind == GrabCommand::Move) {
         physics_->moveGrab(command.target);
       } else {
-        physics_->releaseGrab();
+        physics_->releaseGrab(command.keep);
       }
     }
+    for (const auto& command : commands)
+      if (std::string message = command(*physics_); !message.empty()) problem = std::move(message);
     if (doStep) physics_->step();
   } catch (const std::exception& e) {  // nothing the simulator is known to throw; stop calmly
     const std::lock_guard lock(mutex_);
@@ -415,7 +514,8 @@ bool SceneController::simulationIteration() {
     stepRequests_ = 0;
     return false;
   }
-  if (!doStep && !doReset && !liveChanged && !script && grabs.empty()) return false;
+  if (!doStep && !doReset && !liveChanged && !script && grabs.empty() && commands.empty())
+    return false;
   physics_->fillFrame(back_);
   const std::lock_guard lock(mutex_);
   if (!problem.empty()) status_.error = problem;
@@ -436,7 +536,7 @@ void SceneController::simulationLoop() {
         return stop_.load() || readyPhysics_ ||
                (physics_ && (playing_ || stepRequests_ > 0 || resetRequested_ ||
                              pendingScript_ || !grabCommands_.empty() ||
-                             liveVersion_ != appliedLiveVersion_));
+                             !physicsCommands_.empty() || liveVersion_ != appliedLiveVersion_));
       });
       if (stop_.load()) return;
     }
@@ -456,7 +556,8 @@ void SceneController::simulationLoop() {
     std::unique_lock lock(mutex_);
     simulationWake_.wait_until(lock, next, [this] {
       return stop_.load() || readyPhysics_ || stepRequests_ > 0 || resetRequested_ ||
-             (physics_ && (pendingScript_ || !grabCommands_.empty())) ||
+             (physics_ && (pendingScript_ || !grabCommands_.empty() ||
+                           !physicsCommands_.empty())) ||
              liveVersion_ != appliedLiveVersion_;
     });
   }

@@ -85,7 +85,30 @@ class SceneController {
   /// material point at rest position `rest` towards `target`, move the target, let go.
   void grab(const Eigen::Vector3d& rest, const Eigen::Vector3d& target);
   void moveGrab(const Eigen::Vector3d& target);
-  void releaseGrab();
+  void releaseGrab(bool keep = false);  ///< keep: the spring stays (PullTool ReleaseMode::Keep)
+  /// Edits of the user's work with the window's brushes, applied on the simulation thread in the
+  /// order given before its next step (scene_physics.h): a material dab, a pin or unpin dab, the
+  /// inflate brush pressed (or moved) and released.
+  void paint(const Eigen::Vector3d& centre, const MaterialBrushSettings& brush);
+  void pin(const Eigen::Vector3d& centre, double radius, bool pin);
+  void pressInflate(const Eigen::Vector3d& centre, double radius, double pressure);
+  void releaseInflate();
+  /// The curve tool (scene_physics.h), on the simulation thread like the brushes.
+  void grabCurve(std::vector<Eigen::Vector3d> polyline, bool smooth);
+  void dragCurve(const Eigen::Vector3d& offset);
+  void releaseCurve();
+  /// Undo/redo of materials and pins on the running scene (empty samples: the uniform material
+  /// of the settings). A failure lands in buildStatus().error.
+  void restoreEdits(MaterialSamples samples, std::vector<uint32_t> pins);
+  /// Asks the simulation for the edited state of the scene running now (after the edits queued
+  /// before this call); takeEdits() gives it once captured (in non-threaded mode after advance()).
+  void requestEdits();
+  struct Edits {
+    uint64_t sceneId = 0;
+    MaterialSamples materials;
+    std::vector<uint32_t> pins;
+  };
+  std::optional<Edits> takeEdits();
   /// Replays a session script on the current scene from its next step (once its physics is
   /// ready); an error (a grab point outside the solid) lands in buildStatus().error.
   void playScript(SessionScript script);
@@ -125,6 +148,7 @@ class SceneController {
   void runPhase2(const Phase2& work);
   void finishJob(const Job& job, const std::string& error, const StageTimes* times);
   void publishLocked(SceneFrame& frame);  // swaps `frame` in as the latest; mutex_ held
+  void queuePhysicsCommand(std::function<std::string(ScenePhysics&)> command);
   bool simulationIteration();             // returns whether it published
   void builderLoop();
   void simulationLoop();
@@ -158,8 +182,12 @@ class SceneController {
   struct GrabCommand {
     enum Kind { Grab, Move, Release } kind;
     Eigen::Vector3d rest, target;
+    bool keep = false;
   };
   std::vector<GrabCommand> grabCommands_;
+  /// Brush and undo edits for the simulation thread; each returns a problem sentence or "".
+  std::vector<std::function<std::string(ScenePhysics&)>> physicsCommands_;
+  std::optional<Edits> capturedEdits_;
   SceneSettings live_;  // the caller's latest settings
   uint64_t liveVersion_ = 0;
   // Simulation thread only (or the caller's in non-threaded mode)

@@ -9,6 +9,7 @@
 
 #include "sculpt/build_progress.h"
 #include "sim/standard_forms.h"
+#include "tools/pin_tool.h"
 
 namespace sculpt::app {
 namespace {
@@ -96,6 +97,12 @@ std::unique_ptr<ScenePhysics> ScenePhysics::build(std::shared_ptr<const SceneGeo
     if (g.pinned[v]) physics->simulator_->setFixed(v, true);
   physics->setGravity(settings.gravity);
   physics->applied_ = settings;
+  if (const Project* project = physics->solid_->project.get(); project && project->materials.size()) {
+    // The painted materials of the project, by position (exact when the level is the same).
+    const std::string problem =
+        physics->restoreEdits(project->materials, project->pins, settings.material);
+    if (!problem.empty()) throw std::runtime_error("cannot restore the painted materials: " + problem);
+  }
   physics->updateMaterialFields();
   clock.lap("simulator");
 
@@ -138,8 +145,76 @@ void ScenePhysics::moveGrab(const Eigen::Vector3d& target) {
   if (pull_ && pull_->active()) pull_->moveTarget(target);
 }
 
-void ScenePhysics::releaseGrab() {
-  if (pull_ && pull_->active()) pull_->release();
+void ScenePhysics::releaseGrab(bool keep) {
+  if (pull_ && pull_->active()) pull_->release(keep ? ReleaseMode::Keep : ReleaseMode::LetGo);
+}
+
+long ScenePhysics::paint(const Eigen::Vector3d& centre, const MaterialBrushSettings& brush) {
+  const long touched = paintDab(*model_, centre, brush);
+  if (touched > 0) {
+    updateMaterialFields();
+    updateState();
+  }
+  return touched;
+}
+
+uint32_t ScenePhysics::pin(const Eigen::Vector3d& centre, double radius, bool pin) {
+  return pinInSphere(*simulator_, centre, radius, pin);
+}
+
+void ScenePhysics::pressInflate(const Eigen::Vector3d& centre, double radius, double pressure) {
+  if (!inflate_) inflate_ = std::make_unique<InflateTool>(*simulator_);
+  inflate_->press(centre, radius, pressure);
+}
+
+void ScenePhysics::releaseInflate() {
+  if (inflate_) inflate_->release();
+}
+
+void ScenePhysics::grabCurve(const std::vector<Eigen::Vector3d>& polyline, bool smooth) {
+  if (!curve_) curve_ = std::make_unique<CurveTool>(*simulator_);
+  curve_->grab(polyline, smooth ? CurveProfile::Smooth : CurveProfile::Rigid);
+}
+
+void ScenePhysics::dragCurve(const Eigen::Vector3d& offset) {
+  if (curve_ && curve_->active()) curve_->drag(offset);
+}
+
+void ScenePhysics::releaseCurve() {
+  if (curve_ && curve_->active()) curve_->release();
+}
+
+MaterialSamples ScenePhysics::captureMaterialSamples() const {
+  return captureMaterials(model_->mesh(), applied_.level);
+}
+
+std::vector<uint32_t> ScenePhysics::pinnedPoints() const {
+  std::vector<uint32_t> pins;
+  const std::vector<uint8_t>& fixed = simulator_->fixedMask();
+  for (uint32_t v = 0; v < fixed.size(); ++v)
+    if (fixed[v]) pins.push_back(v);
+  return pins;
+}
+
+std::string ScenePhysics::restoreEdits(const MaterialSamples& samples,
+                                       const std::vector<uint32_t>& pins, const Material& uniform) {
+  const uint32_t points = model_->numControlPoints();
+  for (const uint32_t v : pins)
+    if (v >= points) return "pin " + std::to_string(v) + " is not a control point";
+  const MaterialSamples here = captureMaterials(model_->mesh(), applied_.level);
+  const std::vector<Material> materials =
+      resampleMaterials(samples, here.restPositions, uniform);
+  std::string problem;
+  if (!model_->setMaterials(materials, &problem)) return problem;
+  std::vector<uint8_t> wanted(points, 0);
+  for (const uint32_t v : pins) wanted[v] = 1;
+  for (uint32_t v = 0; v < points; ++v)
+    if ((simulator_->fixedMask()[v] != 0) != (wanted[v] != 0)) simulator_->setFixed(v, wanted[v]);
+  if (!elementVolume_.empty()) {
+    updateMaterialFields();
+    updateState();
+  }
+  return {};
 }
 
 void ScenePhysics::playScript(const SessionScript& script) {
@@ -150,6 +225,9 @@ void ScenePhysics::playScript(const SessionScript& script) {
 void ScenePhysics::reset() {
   player_.reset();  // its loads go with it
   releaseGrab();
+  if (pull_) pull_->clearKept();
+  releaseInflate();
+  releaseCurve();
   const Points zero = Points::Zero(model_->numControlPoints(), 3);
   simulator_->setState(model_->restControl(), zero);
   timeOrigin_ = simulator_->time();
@@ -232,11 +310,25 @@ void ScenePhysics::fillFrame(SceneFrame& frame) const {
   frame.lastStep = lastStep_;
   frame.physicsReady = true;
   frame.springs.clear();
-  if (pull_ && pull_->active()) frame.springs.emplace_back(pull_->pointPosition(), pull_->target());
+  frame.springForces.clear();
+  const auto addPull = [&frame](const PullTool& pull) {
+    frame.springs.emplace_back(pull.pointPosition(), pull.target());
+    frame.springForces.push_back(pull.springForce());
+  };
+  if (pull_ && pull_->active()) addPull(*pull_);
+  const auto addCurve = [&frame](const CurveTool& curve) {  // drawn, not labelled
+    const std::vector<Eigen::Vector3d> points = curve.pointPositions(), targets = curve.targets();
+    for (size_t i = 0; i < points.size() && i < targets.size(); ++i) {
+      frame.springs.emplace_back(points[i], targets[i]);
+      frame.springForces.push_back(std::numeric_limits<double>::quiet_NaN());
+    }
+  };
+  if (curve_ && curve_->active()) addCurve(*curve_);
   if (player_)
-    for (size_t i = 0; i < player_->script().events.size(); ++i)
-      if (const PullTool* pull = player_->pullTool(i); pull && pull->active())
-        frame.springs.emplace_back(pull->pointPosition(), pull->target());
+    for (size_t i = 0; i < player_->script().events.size(); ++i) {
+      if (const PullTool* pull = player_->pullTool(i); pull && pull->active()) addPull(*pull);
+      if (const CurveTool* curve = player_->curveTool(i); curve && curve->active()) addCurve(*curve);
+    }
 }
 
 }  // namespace sculpt::app

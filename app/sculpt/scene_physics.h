@@ -15,6 +15,10 @@
 #include <Eigen/Core>
 
 #include "sculpt/scene_builder.h"
+#include "project/project.h"
+#include "tools/curve_tool.h"
+#include "tools/inflate_tool.h"
+#include "tools/material_brush.h"
 #include "tools/pull_tool.h"
 #include "tools/session_script.h"
 #include "sim/fem_model.h"
@@ -38,6 +42,7 @@ struct SceneFrame {
   bool physicsReady = false;   ///< false: the rest shape while phase 2 runs
   /// Pull springs acting now (a session script's grabs): material point position and target.
   std::vector<std::pair<Eigen::Vector3d, Eigen::Vector3d>> springs;
+  std::vector<double> springForces;  ///< per spring: its force k |x - target| (N); NaN: unknown
 };
 
 /// The rest frame of a geometry before its physics exists: rest nodes, identity gradients, rest
@@ -71,10 +76,32 @@ class ScenePhysics {
   /// spring to `target` (false when no element holds it), moves the target, lets go.
   bool grab(const Eigen::Vector3d& rest, const Eigen::Vector3d& target);
   void moveGrab(const Eigen::Vector3d& target);
-  void releaseGrab();
+  void releaseGrab(bool keep = false);
   /// Replays a session script (core/tools/session_script.h) from now on, in place of one in
   /// progress; reset() ends it. Throws std::invalid_argument when a grab point cannot be located.
   void playScript(const SessionScript& script);
+  /// The window's brushes (edits of the user's work; scene_controller.h queues them):
+  /// a material dab at rest position `centre` (material_brush.h) returns the samples touched;
+  /// pin or unpin the control points within `radius` of `centre`; press (or move) and release the
+  /// inflate brush.
+  long paint(const Eigen::Vector3d& centre, const MaterialBrushSettings& brush);
+  uint32_t pin(const Eigen::Vector3d& centre, double radius, bool pin);
+  void pressInflate(const Eigen::Vector3d& centre, double radius, double pressure);
+  void releaseInflate();
+  /// The curve tool: grabs the material points along a rest polyline (profile smooth or rigid),
+  /// drags them by `offset` (m), lets go. grabCurve throws std::invalid_argument for a curve
+  /// that cannot be located.
+  void grabCurve(const std::vector<Eigen::Vector3d>& polyline, bool smooth);
+  void dragCurve(const Eigen::Vector3d& offset);
+  void releaseCurve();
+  /// The edited state as a project keeps it: painted materials (captureMaterials at level K) and
+  /// the pinned control points (ascending).
+  MaterialSamples captureMaterialSamples() const;
+  std::vector<uint32_t> pinnedPoints() const;
+  /// Undo/redo: sets the materials (resampled by position; empty samples: `uniform` everywhere)
+  /// and the pins. Returns a sentence when they cannot be applied (nothing changes then).
+  std::string restoreEdits(const MaterialSamples& samples, const std::vector<uint32_t>& pins,
+                           const Material& uniform);
   /// Applies what can change live (material, integrator, time step, gravity). Returns a sentence
   /// when a setting is invalid (nothing is changed then).
   std::string applyLive(const SceneSettings& settings);
@@ -91,6 +118,8 @@ class ScenePhysics {
   void setGravity(const Eigen::Vector3d& gravity);
   std::unique_ptr<ScriptPlayer> player_;  ///< the session script being replayed, if any
   std::unique_ptr<PullTool> pull_;        ///< the window's pull tool (created on first use)
+  std::unique_ptr<InflateTool> inflate_;  ///< the window's inflate brush (created on first use)
+  std::unique_ptr<CurveTool> curve_;      ///< the window's curve tool (created on first use)
   void updateState();          // nodes, gradients, strain energy from the simulator's state
   void updateMaterialFields();  // per-element mean E and density
 

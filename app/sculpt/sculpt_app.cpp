@@ -19,12 +19,18 @@
 #include "sculpt/draw_benchmark.h"
 #include "sculpt/help_overlay.h"
 #include "sculpt/ui_scale.h"
+#include "project/autosave.h"
+#include "project/project_file.h"
+#include "tools/script_topology.h"
 #include "tools/session_script.h"
 
 namespace sculpt::app {
 namespace {
 
 using Clock = std::chrono::steady_clock;
+
+// Autosave every five minutes of unsaved changes (ux.md "Files").
+constexpr double kAutosaveIntervalS = 300.0;
 
 double secondsSince(Clock::time_point start) {
   return std::chrono::duration<double>(Clock::now() - start).count();
@@ -50,7 +56,7 @@ SceneSource sourceFor(const std::string& path) {
   std::string extension = std::filesystem::path(path).extension().string();
   std::transform(extension.begin(), extension.end(), extension.begin(),
                  [](unsigned char c) { return static_cast<char>(std::tolower(c)); });
-  return {extension == ".json" ? SceneKind::ControlMesh : SceneKind::ImportedSurface, path};
+  return {extension == ".json" ? SceneKind::ControlMesh : SceneKind::ImportedSurface, path, nullptr};
 }
 
 }  // namespace
@@ -63,7 +69,10 @@ SculptApp::SculptApp(GLFWwindow* window, const Options& options, Clock::time_poi
       controller_(std::make_unique<SceneController>(!options.headless)),
       navigator_(options.stylusPreset ? NavigationPreset::Stylus : NavigationPreset::Blender),
       preferences_(std::move(preferences.preferences)),
-      preferencesFile_(std::move(preferencesFile)) {
+      preferencesFile_(std::move(preferencesFile)),
+      document_(preferencesFile_.parent_path(), kAutosaveIntervalS, [] {
+        return std::chrono::duration<double>(Clock::now().time_since_epoch()).count();
+      }) {
   if (!preferences.warning.empty()) model_.toast(preferences.warning, true, 8.0);
   if (!preferences_.keyMap.empty()) {  // the user's key map; bad lines are reported and skipped
     std::string problems;
@@ -102,8 +111,22 @@ SculptApp::SculptApp(GLFWwindow* window, const Options& options, Clock::time_poi
   });
 
   if (!options.headless) controller_->setChangeNotifier([] { glfwPostEmptyEvent(); });
-  controller_->load(sourceFor(options.scene), model_.settings);
-  if (!options.script.empty()) controller_->playScript(loadSessionScript(options.script));
+  if (std::filesystem::path(options.scene).extension() == kProjectExtension) {
+    openProject(options.scene, options.scene);  // FileError: main reports it, exit 2
+  } else {
+    documentSource_ = sourceFor(options.scene);
+    controller_->load(documentSource_, model_.settings);
+  }
+  if (!options.script.empty()) {
+    SessionScript script = loadSessionScript(options.script);
+    const bool topology = std::any_of(script.events.begin(), script.events.end(), [](const auto& e) {
+      return std::holds_alternative<TopologyEvent>(e.action);
+    });
+    if (topology)
+      scriptTopology_ = std::move(script);
+    else
+      controller_->playScript(std::move(script));
+  }
   lastFrameTime_ = rateWindowStart_ = Clock::now();
   windowReadySeconds_ = secondsSince(started_);
 }
@@ -155,6 +178,29 @@ void SculptApp::syncScene() {
     geometryUploadSeconds_ = secondsSince(uploadStart);
     geometryArrivedSeconds_ = secondsSince(started_);
     model_.status.description = geometry->description;
+    boundaryFacesOfScene_ =
+        geometry->controlMesh ? boundaryFaces(*geometry->controlMesh) : std::vector<FaceRef>{};
+    hoverFace_.reset();
+    firstFace_.reset();
+    if (awaitingEditedScene_) {  // the scene the script's topology events made
+      awaitingEditedScene_ = false;
+      scriptSceneId_ = geometry->sceneId;
+    }
+    if (documentFromNextScene_) {  // a scene from a file: the user's work starts from it
+      documentFromNextScene_ = false;
+      startDocumentFromScene(*geometry);
+      lastGoodSource_ = documentSource_;
+      if (scriptTopology_) applyScriptTopology();
+      if (!recoveryChecked_ && !options_.headless) {  // work a crash left behind
+        recoveryChecked_ = true;
+        std::filesystem::path project = document_.recoveryPath();
+        project.replace_extension();  // ".../untitled.sculpt.recovery" -> ".../untitled.sculpt"
+        if (const auto recovery = findRecovery(project)) {
+          recoveryFile_ = *recovery;
+          model_.document.recoveryOffer = recovery->string();
+        }
+      }
+    }
     if (!model_.sceneFile.empty()) {  // a scene that built is worth offering again
       std::error_code ignored;
       const std::filesystem::path absolute = std::filesystem::absolute(model_.sceneFile, ignored);
@@ -180,6 +226,9 @@ void SculptApp::syncScene() {
       std::printf("simulation running after %.2f s\n", secondsSince(started_));
       std::fflush(stdout);
     }
+    if (deferredScript_ && latest_.physicsReady && scriptSceneId_ != 0 &&
+        latest_.sceneId == scriptSceneId_)
+      controller_->playScript(*std::exchange(deferredScript_, std::nullopt));
     model_.status.uploadBytes = view_.lastUploadBytes();
     model_.status.uploadMs = view_.lastUploadMs();
     if (!latest_.lastStep.message.empty() && latest_.lastStep.message != model_.status.lastStepMessage)
@@ -193,10 +242,17 @@ void SculptApp::syncScene() {
     rateWindowStart_ = Clock::now();
   }
   const BuildStatus build = controller_->buildStatus();
-  if (!build.error.empty() && build.error != model_.status.build.error) model_.toast(build.error, true, 8.0);
+  if (!build.error.empty() && build.error != model_.status.build.error) {
+    model_.toast(build.error, true, 8.0);
+    if (documentFromNextScene_ && view_.hasGeometry()) {  // the document stays with its scene
+      documentFromNextScene_ = false;
+      documentSource_ = lastGoodSource_;
+    }
+  }
   model_.status.build = build;
   model_.status.playing = controller_->playing();
   model_.status.nodes = view_.hasGeometry() ? view_.geometry()->cellMesh.numNodes() : 0;
+  syncDocument();
 }
 
 void SculptApp::runAction(Action action) {
@@ -220,15 +276,27 @@ void SculptApp::runAction(Action action) {
     case Action::ToggleHelp: model_.showHelp = !model_.showHelp; break;
     case Action::Screenshot: r.screenshot = true; break;
     case Action::Quit: r.quit = true; break;
+    case Action::Undo: r.undo = true; break;
+    case Action::Redo:
+    case Action::RedoAlternative: r.redo = true; break;
+    case Action::Save: r.save = true; break;
+    case Action::SaveAs: model_.openSaveAsDialog = true; break;
+    case Action::BrushSmaller:
+      model_.tools.radiusPixels = std::max(2.0f, model_.tools.radiusPixels / 1.25f);
+      break;
+    case Action::BrushLarger:
+      model_.tools.radiusPixels = std::min(1000.0f, model_.tools.radiusPixels * 1.25f);
+      break;
     default: applyCameraAction(action, camera_); break;
   }
 }
 
 void SculptApp::handleInput(const ViewRect& view) {
   const ImGuiIO& io = ImGui::GetIO();
+  const bool brushKeyHeld = brushKeys(io, io.MousePos.x - lastCursorX_);
   if (!io.WantCaptureKeyboard) {
     for (int key = GLFW_KEY_SPACE; key <= GLFW_KEY_LAST; ++key)
-      if (ImGui::IsKeyPressed(key, false))
+      if (ImGui::IsKeyPressed(key, false) && !(brushKeyHeld && key == brushKey_))
         if (const std::optional<Action> action = keys_.actionFor(key, glfwModifiers(io)))
           runAction(*action);
   }
@@ -242,6 +310,11 @@ void SculptApp::handleInput(const ViewRect& view) {
   input.left = io.MouseDown[0], input.right = io.MouseDown[1], input.middle = io.MouseDown[2];
   input.modifiers = glfwModifiers(io);
   input.wheel = io.MouseWheel;
+  if (grabbing_ && input.wheel != 0.0f && !io.WantCaptureMouse) {
+    // While pulling, the wheel sets the target's depth (a tenth of the distance per notch).
+    grabDistance_ *= std::pow(1.1f, -input.wheel);
+    input.wheel = 0.0f;
+  }
   input.doubleClick = io.MouseDoubleClicked[0] || io.MouseDoubleClicked[2];
   input.overObject = cursorDepth_ < 1.0f;
   input.uiWantsMouse = io.WantCaptureMouse;
@@ -249,7 +322,13 @@ void SculptApp::handleInput(const ViewRect& view) {
   const int height = std::max(1, static_cast<int>(view.max.y - view.min.y));
   const PointerResult result = navigator_.update(input, camera_, width, height);
   if (result.cameraChanged || result.gesture != Gesture::None) sceneChanged_ = true;
-  pullStroke(result, input.x, input.y, width, height);
+  if (!brushKeyHeld) toolStroke(result, input.x, input.y, width, height);
+  if (model_.tools.tool == ToolKind::Topology && !io.WantCaptureMouse && result.gesture == Gesture::None)
+    hoverFace_ = pickFace(input.x, input.y, width, height);
+  model_.topologySelection =
+      firstFace_ ? "first face: cell " + std::to_string(firstFace_->face.cell) + ", face " +
+                       std::to_string(firstFace_->face.face)
+                 : std::string();
   if (result.setPivotRequested && !io.WantCaptureMouse) {
     if (const std::optional<glm::vec3> pivot =
             camera_.unproject(input.x, input.y, cursorDepth_, width, height))
@@ -257,37 +336,6 @@ void SculptApp::handleInput(const ViewRect& view) {
   }
 }
 
-void SculptApp::pullStroke(const PointerResult& stroke, float x, float y, int width, int height) {
-  // The pull tool: a stroke that starts on the surface grabs the material point under the cursor
-  // with a spring; the target then follows the cursor in the view plane at the grabbed depth.
-  if (stroke.strokeBegan && view_.hasGeometry() && cursorDepth_ < 1.0f) {
-    const std::optional<glm::vec3> hit = camera_.unproject(x, y, cursorDepth_, width, height);
-    if (hit) {
-      // The surface vertex nearest the hit, and its rest position inside the solid.
-      std::vector<float> positions, normals;
-      view_.deformer()->capture(positions, normals);
-      size_t nearest = 0;
-      float best = std::numeric_limits<float>::max();
-      for (size_t v = 0; 3 * v < positions.size(); ++v) {
-        const float d = glm::distance(*hit, glm::vec3(positions[3 * v], positions[3 * v + 1],
-                                                       positions[3 * v + 2]));
-        if (d < best) best = d, nearest = v;
-      }
-      const Eigen::Vector3d rest =
-          view_.geometry()->restPositions.row(static_cast<Eigen::Index>(nearest)).transpose();
-      controller_->grab(rest, Eigen::Vector3d(hit->x, hit->y, hit->z));
-      grabDepth_ = cursorDepth_;
-      grabbing_ = true;
-    }
-  } else if (stroke.strokeActive && grabbing_) {
-    if (const std::optional<glm::vec3> target = camera_.unproject(x, y, grabDepth_, width, height))
-      controller_->moveGrab(Eigen::Vector3d(target->x, target->y, target->z));
-  }
-  if (stroke.strokeEnded && grabbing_) {
-    controller_->releaseGrab();
-    grabbing_ = false;
-  }
-}
 
 void SculptApp::carryOutRequests() {
   Requests r = std::exchange(model_.requests, Requests{});
@@ -306,10 +354,60 @@ void SculptApp::carryOutRequests() {
   }
   if (r.reset) controller_->reset();
   try {
-    if (r.applySettings) controller_->applySettings(model_.settings);
-    if (!r.loadScene.empty()) loadScene(r.loadScene == "<default>" ? std::string() : r.loadScene);
+    if (r.applySettings) {
+      const SceneSettings current = controller_->settings();
+      if (model_.settings.cageCellsAcross != current.cageCellsAcross &&
+          documentSource_.kind != SceneKind::ControlMesh) {
+        // A new cage is a new control mesh: the work starts again from the surface.
+        if (document_.dirty()) model_.toast("a new cage starts a new project (the old one is autosaved)");
+        loadScene(documentSource_.kind == SceneKind::DefaultBunny ? std::string() : documentSource_.path);
+      } else if (model_.settings.needsRebuild(current)) {
+        loadDocumentScene();  // the edited control mesh, materials and pins at the new level
+      } else {
+        const Material before = controller_->settings().material;
+        controller_->applySettings(model_.settings);
+        const Material& after = model_.settings.material;
+        // The body material fills every sample: an edit of the project (one undo entry, made
+        // when the slider is let go).
+        if (before.youngs != after.youngs || before.poisson != after.poisson ||
+            before.density != after.density || before.damping != after.damping)
+          materialEditPending_ = true;
+      }
+    }
+    if (!r.loadScene.empty()) openFile(r.loadScene == "<default>" ? std::string() : r.loadScene);
   } catch (const std::invalid_argument& error) {
     model_.toast(error.what(), true, 8.0);
+  }
+  if (r.undo) undoRedo(false);
+  if (r.redo) undoRedo(true);
+  if (r.save) saveDocument({});
+  if (!r.saveAs.empty()) saveDocument(r.saveAs);
+  if (r.closeSave && saveDocument({})) {
+    closeConfirmed_ = true;
+    glfwSetWindowShouldClose(window_, 1);
+  }
+  if (r.closeDiscard) {
+    document_.discardRecovery();
+    closeConfirmed_ = true;
+    glfwSetWindowShouldClose(window_, 1);
+  }
+  if (r.recover || r.discardRecovery) {
+    const std::filesystem::path recovery = recoveryFile_;
+    model_.document.recoveryOffer.clear();
+    recoveryFile_.clear();
+    if (r.recover) {
+      try {  // the recovery of an untitled project stays untitled; of a project, its file
+        std::filesystem::path original = recovery;
+        original.replace_extension();  // "x.sculpt.recovery" -> "x.sculpt"
+        openProject(original.filename() == "untitled.sculpt" ? std::filesystem::path() : original,
+                    recovery);
+      } catch (const std::exception& error) {
+        model_.toast(std::string("cannot recover: ") + error.what(), true, 8.0);
+      }
+    } else {
+      std::error_code ignored;
+      std::filesystem::remove(recovery, ignored);
+    }
   }
   if (r.cancelBuild) controller_->cancelBuild();
   if (r.uiScaleChanged) {
@@ -327,10 +425,41 @@ void SculptApp::carryOutRequests() {
   }
 }
 
+void SculptApp::applyScriptTopology() {
+  SessionScript script = *std::exchange(scriptTopology_, std::nullopt);
+  Project edited = document_.project();
+  try {
+    edited.controlMesh = applyTopologyEvents(edited.controlMesh, script);
+  } catch (const std::invalid_argument& error) {
+    const std::string message = options_.script + ": " + error.what();
+    std::cerr << "error: " << message << '\n';
+    model_.toast(message, true, 10.0);
+    return;
+  }
+  // Pins follow their points by position (surviving vertices keep their positions exactly).
+  const Project& original = document_.project();
+  std::vector<uint32_t> pins;
+  for (const uint32_t v : original.pins)
+    for (uint32_t w = 0; w < edited.controlMesh.numVertices(); ++w)
+      if (edited.controlMesh.positions.row(w) == original.controlMesh.positions.row(v)) {
+        pins.push_back(w);
+        break;
+      }
+  normalisePins(pins);
+  edited.pins = std::move(pins);
+  document_.start(std::move(edited));  // the script's starting state, not an undoable edit
+  storeSettingsInProject();
+  deferredScript_ = std::move(script);
+  awaitingEditedScene_ = true;
+  loadDocumentScene();
+}
+
 void SculptApp::loadScene(const std::string& path) {
   model_.sceneFile = path;
   cameraFramed_ = false;
-  controller_->load(sourceFor(path), model_.settings);
+  documentSource_ = sourceFor(path);
+  documentFromNextScene_ = true;
+  controller_->load(documentSource_, model_.settings);
 }
 
 std::string SculptApp::nextScreenshotPath() const {
@@ -374,6 +503,11 @@ void SculptApp::frame(int fbWidth, int fbHeight, bool interactive) {
 
   ImGui_ImplOpenGL3_NewFrame();
   ImGui_ImplGlfw_NewFrame();
+  if (inputHook_) {
+    inputHook_(ImGui::GetIO(), frameIndex_);
+    interactive = true;
+  }
+  ++frameIndex_;
   ImGui::NewFrame();
   ViewRect view;
   if (options_.noUi) {
@@ -388,6 +522,7 @@ void SculptApp::frame(int fbWidth, int fbHeight, bool interactive) {
   }
   lastView_ = view;
   if (interactive) handleInput(view);
+  drawToolOverlay(view);
   ImGui::Render();
 
   const float pixelScale = ImGui::GetIO().DisplayFramebufferScale.x;
@@ -510,6 +645,21 @@ int SculptApp::runWindow() {
     busyFrames = sceneChanged_ || !model_.toasts.empty() ? 3 : busyFrames - 1;
   }
   return 0;
+}
+
+void SculptApp::headlessFrame(const std::string& screenshot) {
+  int width = 0, height = 0;
+  glfwGetFramebufferSize(window_, &width, &height);
+  render::OffscreenTarget target(width, height);
+  target.bind();
+  frame(width, height, false);
+  glFinish();
+  if (!screenshot.empty()) {
+    ScreenshotSettings settings = model_.screenshot;
+    settings.includePanels = !options_.noUi;
+    writeScreenshot(screenshot, settings);
+  }
+  glBindFramebuffer(GL_FRAMEBUFFER, 0);
 }
 
 int SculptApp::runHeadless() {

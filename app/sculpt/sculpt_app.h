@@ -6,20 +6,26 @@
 
 #define GLFW_INCLUDE_NONE
 #include <GLFW/glfw3.h>
+#include <imgui.h>
 
 #include <chrono>
+#include <filesystem>
+#include <functional>
 #include <memory>
 #include <optional>
 #include <string>
 
+#include "edit/topology_edit.h"
 #include "project/preferences.h"
 #include "render/gpu_timer.h"
 #include "sculpt/app_model.h"
+#include "sculpt/document.h"
 #include "sculpt/navigation.h"
 #include "sculpt/options.h"
 #include "sculpt/panels.h"
 #include "sculpt/scene_controller.h"
 #include "sculpt/scene_view.h"
+#include "tools/session_script.h"
 
 namespace sculpt::app {
 
@@ -43,12 +49,52 @@ class SculptApp {
   /// Times options.benchFrames frames offscreen and prints key=value figures.
   int runBenchmark();
 
+  /// Tests and the documentation's screenshots drive the window through this: called every
+  /// frame after the platform input and before the UI, it may set the mouse and keys of
+  /// ImGui's IO; frames are then handled as interactive (input, tools, depth under the cursor).
+  void setInputHook(std::function<void(ImGuiIO&, int frame)> hook) { inputHook_ = std::move(hook); }
+  /// Renders one frame offscreen as runHeadless does (after setInputHook) and, when `screenshot`
+  /// is not empty, writes it there.
+  void headlessFrame(const std::string& screenshot = {});
+  /// For tests and the scripted screenshots: the panels' model (tools can be chosen in it), the
+  /// document, the camera, the 3D view's rectangle and what it shows.
+  AppModel& model() { return model_; }
+  const Document& document() const { return document_; }
+  const render::Camera& camera() const { return camera_; }
+  ViewRect viewRect() const { return lastView_; }
+  const SceneView& sceneView() const { return view_; }
+
  private:
   /// Builds the UI and draws the scene into the bound framebuffer (fbWidth x fbHeight pixels).
   void frame(int fbWidth, int fbHeight, bool interactive);
   void syncScene();
   void handleInput(const ViewRect& view);
+  // Tools (sculpt_tools.cpp)
+  struct SurfaceHit {
+    glm::vec3 world;       ///< the point under the cursor (deformed)
+    Eigen::Vector3d rest;  ///< its material point's rest position (nearest surface vertex)
+  };
+  std::optional<SurfaceHit> surfaceHit(float x, float y, float depth, int width, int height);
+  double brushWorldRadius(float x, float y, float depth, int width, int height) const;
+  Eigen::Vector3d mirrorCentre() const;
+  void toolStroke(const PointerResult& stroke, float x, float y, int width, int height);
   void pullStroke(const PointerResult& stroke, float x, float y, int width, int height);
+  void brushStroke(const PointerResult& stroke, float x, float y, int width, int height);
+  void curveStroke(const PointerResult& stroke, float x, float y, int width, int height);
+  void topologyClick(const PointerResult& stroke, float x, float y, int width, int height);
+  void applyTopology(const std::vector<FaceRef>& picked);
+  std::vector<FaceRef> withMirroredFaces(const std::vector<FaceRef>& faces) const;
+  bool brushKeys(const ImGuiIO& io, float dx);  // F / Shift+F drag; true while it owns the mouse
+  void drawToolOverlay(const ViewRect& view);
+  // Document (sculpt_document.cpp)
+  void startDocumentFromScene(const SceneGeometry& geometry);
+  void loadDocumentScene();
+  void openFile(const std::string& path);
+  void openProject(const std::filesystem::path& path, const std::filesystem::path& from);
+  bool saveDocument(const std::string& saveAsPath);
+  void undoRedo(bool redo);
+  void syncDocument();
+  void storeSettingsInProject();
   void runAction(Action action);
   void carryOutRequests();
   void drawScene(const ViewRect& view, int fbWidth, int fbHeight, float pixelScale);
@@ -75,7 +121,7 @@ class SculptApp {
   ViewRect lastView_{};
   int lastFbWidth_ = 0, lastFbHeight_ = 0;
   float cursorDepth_ = 1.0f;  ///< depth under the cursor in the last drawn frame
-  float grabDepth_ = 1.0f;    ///< depth of the point grabbed by the pull tool
+  float grabDistance_ = 0.0f;  ///< the pull target's distance along the cursor ray (wheel)
   bool grabbing_ = false;
   float lastCursorX_ = 0.0f, lastCursorY_ = 0.0f;
   bool cameraFramed_ = false;
@@ -89,6 +135,47 @@ class SculptApp {
   std::chrono::steady_clock::time_point rateWindowStart_;
   uint64_t rateWindowVersion_ = 0;
   bool imguiReady_ = false;
+  std::function<void(ImGuiIO&, int)> inputHook_;
+  int frameIndex_ = 0;
+
+  // The user's work and the tools
+  Document document_;
+  SceneSource documentSource_;          ///< where the document's surface comes from
+  bool documentFromNextScene_ = true;   ///< the next scene built starts a new document
+  bool recoveryChecked_ = false;
+  std::filesystem::path recoveryFile_;  ///< offered after a crash
+  bool closeConfirmed_ = false;
+  enum class Capture { None, Materials, Pins };
+  Capture pendingCapture_ = Capture::None;  ///< a stroke waiting for the simulation's state
+  std::string pendingLabel_;
+  bool materialEditPending_ = false;  ///< the body material changed: record it once let go
+  std::string lastTitle_;
+  ToolKind strokeTool_ = ToolKind::Pull;
+  bool strokeInverted_ = false;  ///< Ctrl at the stroke's start: push, deflate, unpin
+  bool inflating_ = false;
+  float lastDabX_ = 0, lastDabY_ = 0;
+  int brushKey_ = -1;            ///< the frame key held for F / Shift+F drag
+  bool brushKeyDragged_ = false, brushKeyStrength_ = false;
+  glm::vec3 pullAnchor_{0.0f};   ///< where the pull started (push reflects through it)
+  std::vector<Eigen::Vector3d> curveRest_;  ///< the drawn curve (rest positions)
+  std::vector<glm::vec3> curveWorld_;       ///< and where it was drawn
+  bool curveGrabbed_ = false;
+  float curveDepth_ = 1.0f;
+  glm::vec3 curveStart_{0.0f};
+  struct PickedFace {
+    FaceRef face;
+    std::vector<uint32_t> loop;  ///< its vertices, outward
+  };
+  std::optional<PickedFace> pickFace(float x, float y, int width, int height) const;
+  std::optional<PickedFace> hoverFace_, firstFace_;
+  std::vector<FaceRef> boundaryFacesOfScene_;  ///< of the control mesh shown
+  SceneSource lastGoodSource_;                 ///< the document's source before a load
+  // A --script with topology events: they edit the first scene's control mesh (the document
+  // starts from the edited mesh), and the rest of the script plays once that scene simulates.
+  std::optional<SessionScript> scriptTopology_, deferredScript_;
+  bool awaitingEditedScene_ = false;
+  uint64_t scriptSceneId_ = 0;
+  void applyScriptTopology();
 };
 
 }  // namespace sculpt::app

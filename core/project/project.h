@@ -54,12 +54,12 @@ struct CameraState {
   bool operator==(const CameraState&) const = default;
 };
 
-struct SimulationSettings {
+struct ProjectSimulation {
   std::string integrator = "implicit-euler";
   double timeStepS = 1.0 / 60.0;
   Eigen::Vector3d gravity{0.0, 0.0, -9.81};  ///< m/s^2
   int level = 2;                             ///< simulation level K
-  bool operator==(const SimulationSettings&) const = default;
+  bool operator==(const ProjectSimulation&) const = default;
 };
 
 /// A tool setting: a switch, a number or a word (brush radius, falloff preset, mirror axis...).
@@ -74,7 +74,7 @@ struct Project {
   SurfaceSource surface;
   CameraState camera;
   ToolSettings tools;
-  SimulationSettings simulation;
+  ProjectSimulation simulation;
 };
 
 /// True when the two control meshes have the same positions, cells and tags (bit for bit).

@@ -191,7 +191,7 @@ std::string projectProblem(const Project& project) {
       !std::isfinite(camera.distance)) {
     return "a camera setting is not a finite number";
   }
-  const SimulationSettings& sim = project.simulation;
+  const ProjectSimulation& sim = project.simulation;
   if (!std::isfinite(sim.timeStepS) || !finite(sim.gravity)) {
     return "a simulation setting is not a finite number";
   }
@@ -513,7 +513,7 @@ class ProjectReader {
     camera.orthographic = boolean(section, "orthographic", where);
   }
 
-  void readSimulation(const json& section, SimulationSettings& sim) const {
+  void readSimulation(const json& section, ProjectSimulation& sim) const {
     const std::string where = "simulation.";
     sim.integrator = text(section, "integrator", where);
     sim.timeStepS = number(section, "timeStepS", where);

@@ -87,6 +87,7 @@ class Simulator {
   /// Adds an external load (gravity, forces, springs, pressure, contact); returns it.
   Form* addLoad(std::unique_ptr<Form> load);
   void removeLoad(const Form* load);
+  size_t numLoads() const { return loads_.size(); }
 
   /// Advances by settings().timeStep.
   StepReport step();

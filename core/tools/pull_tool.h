@@ -6,33 +6,21 @@
 //
 // Release either lets go (the spring is removed; the solid relaxes under its other loads) or
 // keeps: the spring stays, its target moved to where the point is at release, with the grab's
-// stiffness, so the solid holds its new shape around that point. Kept springs stay until
-// clearKept(). The tool keeps a reference to its simulator, which must outlive it.
+// stiffness, so the solid holds its new shape around that point (tools/tool_springs.h). Kept
+// springs stay until clearKept(). The tool keeps a reference to its simulator, which must
+// outlive it.
 
 #include <Eigen/Core>
-#include <vector>
 
-#include "sim/fem_model.h"
-#include "sim/load_forms.h"
 #include "sim/material_point.h"
 #include "sim/simulator.h"
+#include "tools/tool_springs.h"
 
 namespace sculpt {
 
-enum class ReleaseMode { LetGo, Keep };
-
-/// Edge length of a typical element: cbrt(rest volume / #elements) (m).
-double typicalCellSize(const FemModel& model);
-
-/// 10 x E x cell size (N/m), E the largest Young's modulus of the Gauss samples: a spring about
-/// as stiff as a few elements, so the grabbed point follows the target closely without making
-/// the system badly conditioned.
-double defaultPullStiffness(const FemModel& model);
-
 class PullTool {
  public:
-  explicit PullTool(Simulator& simulator);
-  ~PullTool();
+  explicit PullTool(Simulator& simulator) : springs_(simulator) {}
   PullTool(const PullTool&) = delete;
   PullTool& operator=(const PullTool&) = delete;
 
@@ -47,8 +35,8 @@ class PullTool {
   /// Removes the springs kept by release(Keep).
   void clearKept();
 
-  bool active() const { return spring_ != nullptr; }
-  size_t numKept() const { return kept_.size(); }
+  bool active() const { return !springs_.held().empty(); }
+  size_t numKept() const { return springs_.numKept(); }
   /// Current position of the grabbed point (the anchor when not grabbing).
   Eigen::Vector3d pointPosition() const;
   /// The spring's target (m); the anchor when not grabbing.
@@ -59,10 +47,9 @@ class PullTool {
   double springForce() const;
 
  private:
-  Simulator& simulator_;
-  PenaltySpringForm* spring_ = nullptr;  // owned by the simulator
-  std::vector<const Form*> kept_;
-  MaterialPoint point_;
+  PenaltySpringForm* spring() const { return active() ? springs_.held().front() : nullptr; }
+
+  ToolSprings springs_;
   Eigen::Vector3d anchor_ = Eigen::Vector3d::Zero();
   bool push_ = false;
 };

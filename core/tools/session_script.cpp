@@ -100,32 +100,71 @@ class Reader {
 
 constexpr double kInf = std::numeric_limits<double>::infinity();
 
-GrabEvent parseGrab(const Reader& r) {
-  r.onlyFields({"t", "type", "point", "path", "stiffness", "release", "keep", "push"});
-  GrabEvent grab;
-  grab.point = r.vector("point");
-  if (!r.has("path")) r.fail("path", "is missing (a non-empty array of [t, x, y, z])");
+// The "path" field: a non-empty array of keys `shape` ("[t, x, y, z]"), times non-decreasing.
+std::vector<PathKey> parsePath(const Reader& r, const std::string& shape) {
+  if (!r.has("path")) r.fail("path", "is missing (a non-empty array of " + shape + ")");
   const json& path = r.at("path");
-  if (!path.is_array() || path.empty())
-    r.fail("path", "must be a non-empty array of [t, x, y, z]");
+  if (!path.is_array() || path.empty()) r.fail("path", "must be a non-empty array of " + shape);
+  std::vector<PathKey> keys;
   for (size_t k = 0; k < path.size(); ++k) {
     const std::string field = "path[" + std::to_string(k) + "]";
     const json& key = path[k];
-    if (!key.is_array() || key.size() != 4) r.fail(field, "must be an array [t, x, y, z]");
+    if (!key.is_array() || key.size() != 4) r.fail(field, "must be an array " + shape);
     for (const json& c : key)
       if (!c.is_number() || !std::isfinite(c.get<double>()))
         r.fail(field, "must hold 4 finite numbers");
     const double t = key[0].get<double>();
     if (t < 0) r.fail(field, "must have a time >= 0 (got " + number(t) + ")");
-    if (!grab.path.empty() && t < grab.path.back().time)
+    if (!keys.empty() && t < keys.back().time)
       r.fail(field, "must not go back in time (times must be non-decreasing)");
-    grab.path.push_back({t, {key[1].get<double>(), key[2].get<double>(), key[3].get<double>()}});
+    keys.push_back({t, {key[1].get<double>(), key[2].get<double>(), key[3].get<double>()}});
   }
-  grab.stiffness = r.numberOr("stiffness", 0.0, 0.0, true, "a finite number > 0 (N/m)");
-  if (r.has("release")) grab.release = r.numberField("release", 0.0, false, "a finite number >= 0");
-  grab.keep = r.boolOr("keep", false);
+  return keys;
+}
+
+// The fields a grab and a curve share: stiffness, release and keep.
+template <typename Drag>
+void parseDragRelease(const Reader& r, Drag& drag) {
+  drag.stiffness = r.numberOr("stiffness", 0.0, 0.0, true, "a finite number > 0 (N/m)");
+  if (r.has("release")) drag.release = r.numberField("release", 0.0, false, "a finite number >= 0");
+  drag.keep = r.boolOr("keep", false);
+}
+
+GrabEvent parseGrab(const Reader& r) {
+  r.onlyFields({"t", "type", "point", "path", "stiffness", "release", "keep", "push"});
+  GrabEvent grab;
+  grab.point = r.vector("point");
+  grab.path = parsePath(r, "[t, x, y, z]");
+  parseDragRelease(r, grab);
   grab.push = r.boolOr("push", false);
   return grab;
+}
+
+CurveEvent parseCurve(const Reader& r) {
+  r.onlyFields(
+      {"t", "type", "points", "path", "profile", "stiffness", "samples", "release", "keep"});
+  CurveEvent curve;
+  if (!r.has("points")) r.fail("points", "is missing (a non-empty array of [x, y, z])");
+  const json& points = r.at("points");
+  if (!points.is_array() || points.empty())
+    r.fail("points", "must be a non-empty array of [x, y, z]");
+  for (size_t k = 0; k < points.size(); ++k)
+    curve.points.push_back(r.vectorOf(points[k], "points[" + std::to_string(k) + "]"));
+  curve.path = parsePath(r, "[t, dx, dy, dz]");
+  const std::string profile = r.stringOr("profile", "rigid");
+  const std::optional<CurveProfile> parsed = parseCurveProfile(profile);
+  if (!parsed) r.fail("profile", "must be rigid or smooth (got \"" + profile + "\")");
+  curve.profile = *parsed;
+  if (r.has("samples")) {
+    const json& samples = r.at("samples");
+    if (!samples.is_number_integer() || samples.get<long long>() < 1 ||
+        samples.get<long long>() > static_cast<long long>(kMaxCurveSamples))
+      r.fail("samples", "must be an integer from 1 to " + std::to_string(kMaxCurveSamples) +
+                            " (got " + samples.dump() + ")");
+    curve.samples = samples.get<size_t>();
+  }
+  parseDragRelease(r, curve);
+  return curve;
 }
 
 InflateEvent parseInflate(const Reader& r) {
@@ -200,10 +239,86 @@ PinEvent parsePin(const Reader& r) {
   return pin;
 }
 
+// `field` as a non-empty array of `width`-tuples of indices (width 1: plain indices), each an
+// integer in [0, 2^32); `shape` describes one entry for messages ("[cell, face]").
+std::vector<std::vector<uint32_t>> indexTuples(const Reader& r, const std::string& field,
+                                               size_t width, const std::string& shape) {
+  if (!r.has(field)) r.fail(field, "is missing (a non-empty array of " + shape + ")");
+  const json& list = r.at(field);
+  if (!list.is_array() || list.empty()) r.fail(field, "must be a non-empty array of " + shape);
+  std::vector<std::vector<uint32_t>> tuples;
+  for (size_t k = 0; k < list.size(); ++k) {
+    const json entry = width == 1 ? json::array({list[k]}) : list[k];
+    if (!entry.is_array() || entry.size() != width)
+      r.fail(field + "[" + std::to_string(k) + "]", "must be " + shape);
+    std::vector<uint32_t> tuple;
+    for (const json& index : entry) {
+      if (!index.is_number_integer() || index.get<long long>() < 0 ||
+          index.get<long long>() > static_cast<long long>(UINT32_MAX))
+        r.fail(field + "[" + std::to_string(k) + "]", "must be " + shape + " of integers >= 0");
+      tuple.push_back(static_cast<uint32_t>(index.get<long long>()));
+    }
+    tuples.push_back(std::move(tuple));
+  }
+  return tuples;
+}
+
+TopologyEvent parseTopology(const Reader& r) {
+  static const std::string kOps = "delete, extrude, bridge, weld, subdivide, crease, corner";
+  if (!r.has("op")) r.fail("op", "is missing (one of " + kOps + ")");
+  const std::string name = r.stringOr("op", "");
+  const std::optional<TopologyOp> op = parseTopologyOp(name);
+  if (!op)
+    r.fail("op", "must be one of " + kOps + " (got \"" + name + "\")");
+  TopologyEvent topology;
+  topology.op = *op;
+  const auto faceList = [&] {
+    for (const auto& f : indexTuples(r, "faces", 2, "[cell, face]"))
+      topology.faces.push_back({f[0], f[1]});
+  };
+  switch (*op) {
+    case TopologyOp::Delete:
+    case TopologyOp::Subdivide:
+      r.onlyFields({"t", "type", "op", "cells"});
+      for (const auto& c : indexTuples(r, "cells", 1, "cell index")) topology.cells.push_back(c[0]);
+      break;
+    case TopologyOp::Extrude:
+      r.onlyFields({"t", "type", "op", "faces", "distance"});
+      faceList();
+      topology.distanceM = r.numberField("distance", 0.0, true, "a finite number > 0 (m)");
+      break;
+    case TopologyOp::Bridge:
+    case TopologyOp::Weld:
+      if (*op == TopologyOp::Bridge) r.onlyFields({"t", "type", "op", "faces"});
+      else r.onlyFields({"t", "type", "op", "faces", "tolerance"});
+      faceList();
+      if (topology.faces.size() != 2) r.fail("faces", "must hold exactly 2 faces [cell, face]");
+      topology.toleranceM = r.numberOr("tolerance", topology.toleranceM, 0.0, false,
+                                       "a finite number >= 0 (m)");
+      break;
+    case TopologyOp::Crease:
+      r.onlyFields({"t", "type", "op", "edges", "untag"});
+      for (const auto& e : indexTuples(r, "edges", 2, "[vertex, vertex]"))
+        topology.edges.push_back({e[0], e[1]});
+      topology.untag = r.boolOr("untag", false);
+      break;
+    case TopologyOp::Corner:
+      r.onlyFields({"t", "type", "op", "vertices", "untag"});
+      for (const auto& v : indexTuples(r, "vertices", 1, "vertex index"))
+        topology.vertices.push_back(v[0]);
+      topology.untag = r.boolOr("untag", false);
+      break;
+  }
+  return topology;
+}
+
 }  // namespace
 
-Eigen::Vector3d GrabEvent::targetAt(double time) const {
-  if (path.empty()) return point;
+Eigen::Vector3d GrabEvent::targetAt(double time) const { return pathAt(path, time, point); }
+
+Eigen::Vector3d pathAt(const std::vector<PathKey>& path, double time,
+                       const Eigen::Vector3d& empty) {
+  if (path.empty()) return empty;
   if (time <= path.front().time) return path.front().target;
   for (size_t k = 1; k < path.size(); ++k) {
     if (time > path[k].time) continue;
@@ -216,13 +331,15 @@ Eigen::Vector3d GrabEvent::targetAt(double time) const {
 }
 
 const char* ScriptEvent::typeName() const {
-  static const char* const kNames[] = {"grab", "inflate", "paint", "pin"};
+  static const char* const kNames[] = {"grab", "inflate", "paint", "pin", "curve", "topology"};
   return kNames[action.index()];
 }
 
 double ScriptEvent::endTime() const {
   if (const auto* grab = std::get_if<GrabEvent>(&action))
     return time + (grab->release ? *grab->release : grab->path.back().time);
+  if (const auto* curve = std::get_if<CurveEvent>(&action))
+    return time + (curve->release ? *curve->release : curve->path.back().time);
   if (const auto* inflate = std::get_if<InflateEvent>(&action)) return time + inflate->duration;
   return time;
 }
@@ -267,7 +384,7 @@ SessionScript parseSessionScript(std::string_view text, std::string_view sourceN
     if (!events[i].is_object()) throw FileError(context + ": must be a JSON object.");
     const Reader bare(events[i], context);
     const std::string type = bare.stringOr("type", "");
-    if (type.empty()) bare.fail("type", "must be one of grab, inflate, paint, pin");
+    if (type.empty()) bare.fail("type", "must be one of grab, inflate, paint, pin, curve, topology");
     const Reader r(events[i], context + " (" + type + ")");
     ScriptEvent event;
     event.index = i;
@@ -280,8 +397,15 @@ SessionScript parseSessionScript(std::string_view text, std::string_view sourceN
       event.action = parsePaint(r);
     } else if (type == "pin") {
       event.action = parsePin(r);
+    } else if (type == "curve") {
+      event.action = parseCurve(r);
+    } else if (type == "topology") {
+      if (event.time != 0)
+        r.fail("t", "must be 0 (topology edits are applied before the simulation starts)");
+      event.action = parseTopology(r);
     } else {
-      bare.fail("type", "must be one of grab, inflate, paint, pin (got \"" + type + "\")");
+      bare.fail("type",
+                "must be one of grab, inflate, paint, pin, curve, topology (got \"" + type + "\")");
     }
     script.events.push_back(std::move(event));
   }
@@ -308,12 +432,28 @@ ScriptPlayer::ScriptPlayer(Simulator& simulator, SessionScript script)
   });
   std::optional<MaterialPointLocator> locator;
   for (size_t i = 0; i < script_.events.size(); ++i) {
+    if (std::holds_alternative<TopologyEvent>(script_.events[i].action))
+      throw std::invalid_argument(
+          "events[" + std::to_string(script_.events[i].index) +
+          "] (topology): a topology edit cannot be replayed on a running simulation; apply the "
+          "script's topology events to the control mesh before building the model.");
     const auto* grab = std::get_if<GrabEvent>(&script_.events[i].action);
-    if (!grab) continue;
+    const auto* curve = std::get_if<CurveEvent>(&script_.events[i].action);
+    if (!grab && !curve) continue;
     if (!locator) locator.emplace(simulator_.model().mesh());
+    if (curve) {
+      try {
+        runners_[i].curve =
+            sampleCurve(simulator_.model(), *locator, curve->points, curve->samples);
+      } catch (const std::invalid_argument& e) {
+        throw std::invalid_argument("events[" + std::to_string(script_.events[i].index) +
+                                    "] (curve): " + e.what());
+      }
+      continue;
+    }
     runners_[i].point = locator->locate(grab->point);
     if (!runners_[i].point)
-      throw std::invalid_argument("events[" + std::to_string(i) +
+      throw std::invalid_argument("events[" + std::to_string(script_.events[i].index) +
                                   "] (grab): the point cannot be located in the solid.");
   }
 }
@@ -328,19 +468,28 @@ const PullTool* ScriptPlayer::pullTool(size_t index) const {
   return index < runners_.size() ? runners_[index].pull.get() : nullptr;
 }
 
+const CurveTool* ScriptPlayer::curveTool(size_t index) const {
+  return index < runners_.size() ? runners_[index].curveTool.get() : nullptr;
+}
+
 std::vector<std::string> ScriptPlayer::takeLog() { return std::exchange(log_, {}); }
 
 void ScriptPlayer::start(size_t i) {
   const ScriptEvent& event = script_.events[i];
   Runner& runner = runners_[i];
   const std::string name =
-      "t=" + number(time_) + " s: events[" + std::to_string(i) + "] " + event.typeName();
+      "t=" + number(time_) + " s: events[" + std::to_string(event.index) + "] " + event.typeName();
   try {
     if (const auto* grab = std::get_if<GrabEvent>(&event.action)) {
       runner.pull = std::make_unique<PullTool>(simulator_);
       runner.pull->grab(*runner.point, grab->targetAt(time_ - event.time), grab->stiffness,
                         grab->push);
       log_.push_back(name + " started");
+    } else if (const auto* curve = std::get_if<CurveEvent>(&event.action)) {
+      runner.curveTool = std::make_unique<CurveTool>(simulator_);
+      runner.curveTool->grab(runner.curve, curve->profile, curve->stiffness);
+      runner.curveTool->drag(curve->offsetAt(time_ - event.time));
+      log_.push_back(name + " started (" + std::to_string(runner.curve.size()) + " points)");
     } else if (const auto* inflate = std::get_if<InflateEvent>(&event.action)) {
       runner.inflate = std::make_unique<InflateTool>(simulator_);
       runner.inflate->press(inflate->centre, inflate->radius, inflate->pressure);
@@ -364,10 +513,10 @@ void ScriptPlayer::start(size_t i) {
                      (pin->unpin ? "unpinned" : "pinned"));
     }
   } catch (const std::invalid_argument& e) {
-    throw std::invalid_argument("events[" + std::to_string(i) + "] (" + event.typeName() +
+    throw std::invalid_argument("events[" + std::to_string(event.index) + "] (" + event.typeName() +
                                 "): " + e.what());
   }
-  runner.phase = (runner.pull || runner.inflate) ? Phase::Active : Phase::Done;
+  runner.phase = (runner.pull || runner.curveTool || runner.inflate) ? Phase::Active : Phase::Done;
 }
 
 void ScriptPlayer::finish(size_t i) {
@@ -377,9 +526,13 @@ void ScriptPlayer::finish(size_t i) {
     const auto* grab = std::get_if<GrabEvent>(&event.action);
     runner.pull->release(grab->keep ? ReleaseMode::Keep : ReleaseMode::LetGo);
   }
+  if (runner.curveTool) {
+    const auto* curve = std::get_if<CurveEvent>(&event.action);
+    runner.curveTool->release(curve->keep ? ReleaseMode::Keep : ReleaseMode::LetGo);
+  }
   if (runner.inflate) runner.inflate->release();
   runner.phase = Phase::Done;
-  log_.push_back("t=" + number(time_) + " s: events[" + std::to_string(i) + "] " +
+  log_.push_back("t=" + number(time_) + " s: events[" + std::to_string(event.index) + "] " +
                  event.typeName() + " ended");
 }
 
@@ -392,11 +545,14 @@ StepReport ScriptPlayer::step() {
     if (runner.phase == Phase::Pending && event.time <= due) start(i);
     if (runner.phase != Phase::Active) continue;
     const auto* grab = std::get_if<GrabEvent>(&event.action);
-    const bool ends = grab ? grab->release && event.endTime() <= due : event.endTime() <= due;
-    if (ends) {
+    const auto* curve = std::get_if<CurveEvent>(&event.action);
+    const bool held = (grab && !grab->release) || (curve && !curve->release);
+    if (!held && event.endTime() <= due) {
       finish(i);
     } else if (grab) {
       runner.pull->moveTarget(grab->targetAt(time_ + h - event.time));
+    } else if (curve) {
+      runner.curveTool->drag(curve->offsetAt(time_ + h - event.time));
     }
   }
   const StepReport report = simulator_.step();

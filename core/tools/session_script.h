@@ -19,19 +19,27 @@
 #include <variant>
 #include <vector>
 
+#include "edit/topology_operation.h"
 #include "sim/simulator.h"
+#include "tools/curve_tool.h"
 #include "tools/inflate_tool.h"
 #include "tools/material_brush.h"
 #include "tools/pull_tool.h"
 
 namespace sculpt {
 
+/// A key of a drag path: a world target (grab) or a translation (curve) at a time.
+struct PathKey {
+  double time = 0;                                   ///< s after the event's start, >= 0
+  Eigen::Vector3d target = Eigen::Vector3d::Zero();  ///< m: grab target, curve offset
+};
+/// The path at `time` s after the start: linear between keys, held outside them; `empty` when
+/// there are no keys.
+Eigen::Vector3d pathAt(const std::vector<PathKey>& path, double time, const Eigen::Vector3d& empty);
+
 /// Grab the material point at rest position `point` with a spring and drag it along `path`.
 struct GrabEvent {
-  struct Key {
-    double time = 0;                                   ///< s after the event's start, >= 0
-    Eigen::Vector3d target = Eigen::Vector3d::Zero();  ///< m (world)
-  };
+  using Key = PathKey;
   Eigen::Vector3d point = Eigen::Vector3d::Zero();  ///< rest position (nearest solid point)
   std::vector<Key> path;                            ///< non-empty, times non-decreasing
   double stiffness = 0;                             ///< N/m; 0: defaultPullStiffness
@@ -65,13 +73,33 @@ struct PinEvent {
   bool unpin = false;
 };
 
+/// Grab the curve through rest positions `points` (CurveTool) and drag it by the offsets of
+/// `path`.
+struct CurveEvent {
+  std::vector<Eigen::Vector3d> points;  ///< rest polyline, non-empty
+  std::vector<PathKey> path;            ///< offsets (m), non-empty, times non-decreasing
+  CurveProfile profile = CurveProfile::Rigid;
+  double stiffness = 0;           ///< N/m for the whole curve; 0: defaultPullStiffness
+  size_t samples = 0;             ///< 0: defaultCurveSamples
+  std::optional<double> release;  ///< s after the start; none: held
+  bool keep = false;              ///< release with ReleaseMode::Keep
+  Eigen::Vector3d offsetAt(double time) const {
+    return pathAt(path, time, Eigen::Vector3d::Zero());
+  }
+};
+
+/// Edit the control mesh's topology (core/edit/topology_operation.h). Only at t = 0: a script's
+/// topology events are applied to the control mesh, in file order, before the model is built
+/// (tools/script_topology.h); ScriptPlayer rejects them.
+using TopologyEvent = TopologyOperation;
+
 struct ScriptEvent {
   size_t index = 0;  ///< position in the file's "events" array
   double time = 0;   ///< s
-  std::variant<GrabEvent, InflateEvent, PaintEvent, PinEvent> action;
-  const char* typeName() const;  ///< "grab", "inflate", "paint", "pin"
+  std::variant<GrabEvent, InflateEvent, PaintEvent, PinEvent, CurveEvent, TopologyEvent> action;
+  const char* typeName() const;  ///< "grab", "inflate", "paint", "pin", "curve", "topology"
   /// When it stops acting: the start for paint and pin, start + release (or the last path key)
-  /// for grab, start + duration for inflate.
+  /// for grab and curve, start + duration for inflate.
   double endTime() const;
 };
 
@@ -90,9 +118,12 @@ SessionScript loadSessionScript(const std::filesystem::path& path);
 
 class ScriptPlayer {
  public:
-  /// Locates every grab point in the model. The simulator must outlive the player; the
-  /// player's loads are removed when it is destroyed (kept springs included). Throws
-  /// std::invalid_argument when a grab point cannot be located (a model without elements).
+  /// Locates every grab point and curve sample in the model. The simulator must outlive the
+  /// player; the player's loads are removed when it is destroyed (kept springs included). Throws
+  /// std::invalid_argument when a grab point or curve cannot be located (a model without
+  /// elements) or a curve has too many samples, and for a topology event (those edit the mesh
+  /// the model is built from: apply them first, see tools/script_topology.h). Events are named
+  /// by their index in the file (ScriptEvent::index).
   ScriptPlayer(Simulator& simulator, SessionScript script);
   ~ScriptPlayer();
   ScriptPlayer(const ScriptPlayer&) = delete;
@@ -109,6 +140,8 @@ class ScriptPlayer {
   std::optional<MaterialPoint> grabPoint(size_t index) const;
   /// The pull tool of events[index] (nullptr for other events).
   const PullTool* pullTool(size_t index) const;
+  /// The curve tool of events[index] (nullptr for other events or before it starts).
+  const CurveTool* curveTool(size_t index) const;
   /// Lines about events started and ended since the last call ("t=0.5 s: events[1] inflate
   /// started ..."), for a command-line log.
   std::vector<std::string> takeLog();
@@ -119,6 +152,8 @@ class ScriptPlayer {
     Phase phase = Phase::Pending;
     std::optional<MaterialPoint> point;
     std::unique_ptr<PullTool> pull;
+    std::vector<CurveSample> curve;
+    std::unique_ptr<CurveTool> curveTool;
     std::unique_ptr<InflateTool> inflate;
   };
   void start(size_t i);

@@ -354,12 +354,14 @@ TEST(KeyMap, DefaultsHoldTheBindingsOfUx) {
   EXPECT_EQ(keys.actionFor(GLFW_KEY_F, GLFW_MOD_CAPS_LOCK), Action::FrameModel);
   EXPECT_FALSE(keys.actionFor(GLFW_KEY_Q, 0).has_value());
   EXPECT_FALSE(keys.actionFor(GLFW_KEY_F, GLFW_MOD_ALT).has_value());
-  // Ctrl+Z, Ctrl+Shift+Z, Ctrl+Y and Ctrl+S stay free for undo, redo and save (ux.md).
-  for (const auto& [key, mods] :
-       {std::pair{GLFW_KEY_Z, GLFW_MOD_CONTROL},
-        std::pair{GLFW_KEY_Z, GLFW_MOD_CONTROL | GLFW_MOD_SHIFT},
-        std::pair{GLFW_KEY_Y, GLFW_MOD_CONTROL}, std::pair{GLFW_KEY_S, GLFW_MOD_CONTROL}})
-    EXPECT_FALSE(keys.actionFor(key, mods).has_value()) << chordName(key, mods);
+  // ux.md "Undo" and "Files": Ctrl+Z, Ctrl+Shift+Z (and Ctrl+Y), Ctrl+S; [ and ] step the brush.
+  EXPECT_EQ(keys.actionFor(GLFW_KEY_Z, GLFW_MOD_CONTROL), Action::Undo);
+  EXPECT_EQ(keys.actionFor(GLFW_KEY_Z, GLFW_MOD_CONTROL | GLFW_MOD_SHIFT), Action::Redo);
+  EXPECT_EQ(keys.actionFor(GLFW_KEY_Y, GLFW_MOD_CONTROL), Action::RedoAlternative);
+  EXPECT_EQ(keys.actionFor(GLFW_KEY_S, GLFW_MOD_CONTROL), Action::Save);
+  EXPECT_EQ(keys.actionFor(GLFW_KEY_S, GLFW_MOD_CONTROL | GLFW_MOD_SHIFT), Action::SaveAs);
+  EXPECT_EQ(keys.actionFor(GLFW_KEY_LEFT_BRACKET, 0), Action::BrushSmaller);
+  EXPECT_EQ(keys.actionFor(GLFW_KEY_RIGHT_BRACKET, 0), Action::BrushLarger);
 }
 
 TEST(KeyMap, NoTwoDefaultBindingsShareAChordAndEveryActionIsBound) {

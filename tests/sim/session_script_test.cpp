@@ -60,7 +60,7 @@ TEST(SessionScript, MalformedScriptsGiveOneSentenceNamingEventAndField) {
       {R"({"format": "sculpt-session", "version": 2, "events": []})",
        "s.json: 'version' is 2; this program reads version 1."},
       {wrap(pin + R"(, {"t": 1, "type": "explode"})"),
-       "s.json: events[1]: 'type' must be one of grab, inflate, paint, pin (got \"explode\")."},
+       "s.json: events[1]: 'type' must be one of grab, inflate, paint, pin, curve, topology (got \"explode\")."},
       {wrap(R"({"t": "soon", "type": "pin", "box": [[0, 0, 0], [1, 1, 1]]})"),
        "s.json: events[0] (pin): 't' must be a finite number >= 0 (s) (got \"soon\")."},
       {wrap(R"({"t": 0, "type": "inflate", "pressure": 5, "duration": -1})"),

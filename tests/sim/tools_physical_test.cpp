@@ -14,48 +14,20 @@
 #include "sim/material_point.h"
 #include "sim/simulator.h"
 #include "support/fem_builders.h"
+#include "support/tool_scene.h"
 #include "tools/pull_tool.h"
 #include "tools/session_script.h"
 
 namespace sculpt {
 namespace {
 
-struct Scene {
-  std::unique_ptr<FemModel> model;
-  std::unique_ptr<Simulator> simulator;
-};
-
-// block3 (the unit-cell cube [0,3]^3) at level 1, E = 1e5 Pa, rho = 1000, mass-proportional
-// damping 2000 kg/(m^3 s) (amplitudes decay like exp(-t)), steps of 0.02 s.
-Scene makeScene() {
-  FemSetup setup;
-  setup.level = 1;
-  setup.material.damping = 2000;
-  Scene s;
-  s.model = test::buildModel(test::block3(), setup);
-  if (!s.model) return s;
-  SimulationSettings settings;
-  settings.timeStep = 0.02;
-  s.simulator = std::make_unique<Simulator>(*s.model, settings);
-  return s;
-}
-
-void play(ScriptPlayer& player, double until) {
-  while (player.time() < until - 1e-9) ASSERT_TRUE(player.step().ok) << "t=" << player.time();
-}
-
-Points nodesOf(const FemModel& model, const Points& control) {
-  Points nodes;
-  model.nodesFromControl(control, nodes);
-  return nodes;
-}
+using test::makeToolScene;
+using test::nodesOf;
+using test::play;
+using test::pointAt;
 
 double enclosedVolume(const FemModel& model, const Points& control) {
   return PressureForm(model, 0.0).regionVolume(nodesOf(model, control));
-}
-
-Eigen::Vector3d pointAt(const FemModel& model, const Points& control, const MaterialPoint& p) {
-  return materialPointPosition(model.mesh(), nodesOf(model, control), p);
 }
 
 const char* const kPullScript = R"({
@@ -67,7 +39,7 @@ const char* const kPullScript = R"({
   ]})";
 
 TEST(PhysicalTools, PullMovesThePointTowardTheTargetAndReleasesCleanly) {
-  Scene s = makeScene();
+  test::ToolScene s = makeToolScene();
   ASSERT_TRUE(s.model);
   ScriptPlayer player(*s.simulator, parseSessionScript(kPullScript, "pull"));
   const MaterialPoint point = *player.grabPoint(1);
@@ -100,7 +72,7 @@ TEST(PhysicalTools, PullMovesThePointTowardTheTargetAndReleasesCleanly) {
 }
 
 TEST(PhysicalTools, PushMovesThePointAwayFromTheCursor) {
-  Scene s = makeScene();
+  test::ToolScene s = makeToolScene();
   ASSERT_TRUE(s.model);
   std::string script = kPullScript;
   script.replace(script.find("\"release\""), 0, "\"push\": true, ");
@@ -115,7 +87,7 @@ TEST(PhysicalTools, PushMovesThePointAwayFromTheCursor) {
 }
 
 double volumeAfterPressure(double pressure) {
-  Scene s = makeScene();
+  test::ToolScene s = makeToolScene();
   if (!s.model) return NAN;
   const std::string text = R"({"format": "sculpt-session", "version": 1, "events": [
       {"t": 0, "type": "inflate", "pressure": )" + std::to_string(pressure) +
@@ -138,7 +110,7 @@ TEST(PhysicalTools, InflateGrowsAndDeflateShrinksTheVolume) {
 // Bulge of the top under a local pressure, measured as the change of the loaded region's volume
 // term, with or without the top painted 100x stiffer first.
 double topBulge(bool paintStiff) {
-  Scene s = makeScene();
+  test::ToolScene s = makeToolScene();
   if (!s.model) return NAN;
   std::string events =
       R"({"t": 0, "type": "pin", "box": [[-1, -1, -1], [4, 0.01, 4]]},
@@ -172,7 +144,7 @@ TEST(PhysicalTools, ReplayIsBitForBitRepeatable) {
     ]})";
   Points result[2];
   for (Points& r : result) {
-    Scene s = makeScene();
+    test::ToolScene s = makeToolScene();
     ASSERT_TRUE(s.model);
     ScriptPlayer player(*s.simulator, parseSessionScript(text, "twice"));
     play(player, 0.8);

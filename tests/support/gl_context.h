@@ -13,6 +13,19 @@
 
 namespace sculpt::testing {
 
+/// A hidden window with a current OpenGL 3.3 core context (glfwInit must have succeeded);
+/// null when it cannot be created.
+inline GLFWwindow* hiddenGlWindow(int width, int height) {
+  glfwWindowHint(GLFW_CONTEXT_VERSION_MAJOR, 3);
+  glfwWindowHint(GLFW_CONTEXT_VERSION_MINOR, 3);
+  glfwWindowHint(GLFW_OPENGL_PROFILE, GLFW_OPENGL_CORE_PROFILE);
+  glfwWindowHint(GLFW_OPENGL_FORWARD_COMPAT, GLFW_TRUE);
+  glfwWindowHint(GLFW_VISIBLE, GLFW_FALSE);
+  GLFWwindow* window = glfwCreateWindow(width, height, "sculpt gui test", nullptr, nullptr);
+  if (window) glfwMakeContextCurrent(window);
+  return window;
+}
+
 /// Fixture: a current OpenGL 3.3 core context on a hidden 64x64 window (needs an X display; the
 /// GUI tests run under xvfb-run).
 class GlContextTest : public ::testing::Test {
@@ -21,14 +34,8 @@ class GlContextTest : public ::testing::Test {
     ASSERT_NE(std::getenv("DISPLAY"), nullptr)
         << "no X display: run the GUI tests under xvfb-run (scripts/test.sh does)";
     ASSERT_TRUE(glfwInit());
-    glfwWindowHint(GLFW_CONTEXT_VERSION_MAJOR, 3);
-    glfwWindowHint(GLFW_CONTEXT_VERSION_MINOR, 3);
-    glfwWindowHint(GLFW_OPENGL_PROFILE, GLFW_OPENGL_CORE_PROFILE);
-    glfwWindowHint(GLFW_OPENGL_FORWARD_COMPAT, GLFW_TRUE);
-    glfwWindowHint(GLFW_VISIBLE, GLFW_FALSE);
-    window_ = glfwCreateWindow(64, 64, "sculpt gui test", nullptr, nullptr);
+    window_ = hiddenGlWindow(64, 64);
     ASSERT_NE(window_, nullptr);
-    glfwMakeContextCurrent(window_);
   }
   void TearDown() override {
     if (window_) glfwDestroyWindow(window_);

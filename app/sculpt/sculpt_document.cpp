@@ -1,0 +1,240 @@
+// SculptApp: the user's work as a document (document.h): starting it from a scene, opening,
+// saving, undo and redo, autosave and the recovery offer, the unsaved-changes prompt.
+
+#include <algorithm>
+#include <fstream>
+#include <iostream>
+#include <sstream>
+
+#include "edit/project_edit.h"
+#include "project/project_file.h"
+#include "sculpt/sculpt_app.h"
+
+namespace sculpt::app {
+namespace {
+
+// Where the document's surface comes from, kept in the project's tool settings.
+constexpr char kSourceKey[] = "scene.source";
+
+std::string sourceName(SceneKind kind) {
+  switch (kind) {
+    case SceneKind::DefaultBunny: return "bunny";
+    case SceneKind::ImportedSurface: return "surface";
+    case SceneKind::ControlMesh: return "control";
+  }
+  return "control";
+}
+
+std::string fileHash(const std::string& path) {
+  std::ifstream in(path, std::ios::binary);
+  if (!in) return {};
+  std::ostringstream bytes;
+  bytes << in.rdbuf();
+  return contentHash(bytes.str());
+}
+
+bool isProjectFile(const std::string& path) {
+  std::string extension = std::filesystem::path(path).extension().string();
+  std::transform(extension.begin(), extension.end(), extension.begin(),
+                 [](unsigned char c) { return static_cast<char>(std::tolower(c)); });
+  return extension == kProjectExtension || extension == ".recovery";
+}
+
+Integrator integratorFromName(const std::string& name) {
+  return name == "paper" ? Integrator::Paper : Integrator::Implicit;
+}
+
+}  // namespace
+
+void SculptApp::startDocumentFromScene(const SceneGeometry& geometry) {
+  Project project;
+  if (geometry.controlMesh) project.controlMesh = *geometry.controlMesh;
+  for (uint32_t v = 0; v < geometry.pinned.size(); ++v)
+    if (geometry.pinned[v]) project.pins.push_back(v);
+  project.surface.path = documentSource_.kind == SceneKind::DefaultBunny
+                             ? std::string("bunny.obj")
+                             : std::filesystem::absolute(documentSource_.path).string();
+  if (documentSource_.kind == SceneKind::ImportedSurface)
+    project.surface.contentHash = fileHash(documentSource_.path);
+  project.tools[kSourceKey] = sourceName(documentSource_.kind);
+  document_.start(std::move(project));
+  storeSettingsInProject();
+}
+
+void SculptApp::storeSettingsInProject() {
+  Project& p = document_.settingsOnly();
+  p.camera.pivot = Eigen::Vector3d(camera_.pivot().x, camera_.pivot().y, camera_.pivot().z);
+  p.camera.yawRad = camera_.yaw();
+  p.camera.pitchRad = camera_.pitch();
+  p.camera.distance = camera_.distance();
+  p.camera.orthographic = camera_.orthographic();
+  const std::string source = std::get<std::string>(p.tools.count(kSourceKey)
+                                                       ? p.tools.at(kSourceKey)
+                                                       : ToolValue(std::string("bunny")));
+  storeToolState(model_.tools, p.tools);
+  p.tools[kSourceKey] = source;
+  p.tools["scene.cageCellsAcross"] = model_.settings.cageCellsAcross;
+  p.tools["scene.renderLevel"] = static_cast<double>(model_.settings.renderLevel);
+  p.simulation.integrator = model_.settings.integrator == Integrator::Paper ? "paper" : "implicit-euler";
+  p.simulation.timeStepS = model_.settings.timeStep;
+  p.simulation.gravity = model_.settings.gravity;
+  p.simulation.level = model_.settings.level;
+}
+
+void SculptApp::loadDocumentScene() {
+  SceneSource source = documentSource_;
+  source.project = std::make_shared<const Project>(document_.project());
+  documentFromNextScene_ = false;
+  controller_->load(source, model_.settings);
+}
+
+void SculptApp::openFile(const std::string& path) {
+  if (!isProjectFile(path)) {
+    loadScene(path);
+    return;
+  }
+  try {
+    openProject(path, path);
+  } catch (const std::exception& error) {
+    model_.toast(error.what(), true, 8.0);
+  }
+}
+
+void SculptApp::openProject(const std::filesystem::path& path, const std::filesystem::path& from) {
+  Project project = loadProject(from);  // FileError: one sentence naming the file
+  const auto source = project.tools.find(kSourceKey);
+  const std::string kind =
+      source != project.tools.end() && std::holds_alternative<std::string>(source->second)
+          ? std::get<std::string>(source->second)
+          : std::string("control");
+  SceneSource scene;
+  scene.kind = kind == "bunny"     ? SceneKind::DefaultBunny
+               : kind == "surface" ? SceneKind::ImportedSurface
+                                   : SceneKind::ControlMesh;
+  if (scene.kind == SceneKind::ImportedSurface) {
+    std::filesystem::path surface = project.surface.path;
+    if (surface.is_relative()) surface = from.parent_path() / surface;
+    scene.path = surface.string();
+    if (!std::filesystem::exists(surface))
+      throw std::runtime_error(path.filename().string() + ": its surface " + surface.string() +
+                               " does not exist");
+    if (!project.surface.contentHash.empty() && fileHash(scene.path) != project.surface.contentHash)
+      model_.toast("the surface " + surface.filename().string() +
+                   " changed since the project was saved", true, 8.0);
+  }
+  // Settings saved with the project
+  model_.tools = loadToolState(project.tools);
+  SceneSettings& s = model_.settings;
+  s.level = std::clamp(project.simulation.level, 1, 3);
+  s.integrator = integratorFromName(project.simulation.integrator);
+  if (project.simulation.timeStepS > 0 && std::isfinite(project.simulation.timeStepS))
+    s.timeStep = project.simulation.timeStepS;
+  if (project.simulation.gravity.allFinite()) s.gravity = project.simulation.gravity;
+  if (const auto it = project.tools.find("scene.cageCellsAcross");
+      it != project.tools.end() && std::holds_alternative<double>(it->second))
+    s.cageCellsAcross = std::clamp(std::get<double>(it->second), 1.0, 64.0);
+  if (const auto it = project.tools.find("scene.renderLevel");
+      it != project.tools.end() && std::holds_alternative<double>(it->second))
+    s.renderLevel = std::clamp(static_cast<int>(std::get<double>(it->second)), 0, 5);
+  const CameraState camera = project.camera;
+  const bool recovered = from != path;
+  document_.start(std::move(project), path, recovered);  // recovered work is unsaved work
+  documentSource_ = scene;
+  camera_.setPivot(glm::vec3(camera.pivot.x(), camera.pivot.y(), camera.pivot.z()));
+  camera_.setOrientation(static_cast<float>(camera.yawRad), static_cast<float>(camera.pitchRad));
+  camera_.setDistance(static_cast<float>(camera.distance));
+  camera_.setOrthographic(camera.orthographic);
+  cameraFramed_ = true;
+  model_.sceneFile = path.string();
+  if (!recovered && !path.empty()) {
+    preferences_.addRecentFile(std::filesystem::absolute(path).string());
+    model_.recentScenes = preferences_.recentFiles;
+  }
+  loadDocumentScene();
+}
+
+bool SculptApp::saveDocument(const std::string& saveAsPath) {
+  if (saveAsPath.empty() && document_.path().empty()) {
+    model_.openSaveAsDialog = true;
+    return false;
+  }
+  storeSettingsInProject();
+  try {
+    if (saveAsPath.empty()) {
+      document_.save();
+    } else {
+      std::filesystem::path path = saveAsPath;
+      if (path.extension() != kProjectExtension) path += kProjectExtension;
+      document_.saveAs(path);
+      preferences_.addRecentFile(std::filesystem::absolute(path).string());
+      model_.recentScenes = preferences_.recentFiles;
+    }
+  } catch (const std::exception& error) {
+    model_.toast(std::string("not saved: ") + error.what(), true, 8.0);
+    return false;
+  }
+  model_.toast("saved " + document_.path().string());
+  return true;
+}
+
+void SculptApp::undoRedo(bool redo) {
+  if (pendingCapture_ != Capture::None) return;  // a stroke is still being recorded
+  const std::string label = redo ? document_.redoLabel() : document_.undoLabel();
+  std::optional<Document::Change> change;
+  try {
+    change = redo ? document_.redo() : document_.undo();
+  } catch (const std::exception& error) {  // the history does not match: say so, keep working
+    model_.toast(std::string(redo ? "cannot redo: " : "cannot undo: ") + error.what(), true, 8.0);
+    return;
+  }
+  if (!change) return;
+  model_.toast((redo ? "Redo " : "Undo ") + label);
+  if (change->controlMesh) {
+    firstFace_.reset();
+    hoverFace_.reset();
+    loadDocumentScene();  // materials and pins come with the rebuilt scene
+  } else if (change->materialsOrPins) {
+    controller_->restoreEdits(document_.project().materials, document_.project().pins);
+  }
+}
+
+void SculptApp::syncDocument() {
+  // A paint or pin stroke becomes one undo entry once the simulation has captured its result.
+  if (std::optional<SceneController::Edits> edits = controller_->takeEdits()) {
+    if (pendingCapture_ != Capture::None) {
+      Project after = document_.project();
+      if (pendingCapture_ == Capture::Materials)
+        after.materials = std::move(edits->materials);
+      else
+        after.pins = std::move(edits->pins);
+      document_.commit(pendingLabel_, std::move(after));
+      pendingCapture_ = Capture::None;
+    }
+  }
+  if (materialEditPending_ && pendingCapture_ == Capture::None && !ImGui::GetIO().MouseDown[0]) {
+    materialEditPending_ = false;
+    controller_->requestEdits();
+    pendingCapture_ = Capture::Materials;
+    pendingLabel_ = "Set material";
+  }
+  if (const std::string problem = document_.tick(); !problem.empty()) model_.toast(problem, true, 8.0);
+  DocumentStatus& d = model_.document;
+  d.title = document_.title();
+  d.dirty = document_.dirty();
+  d.hasPath = !document_.path().empty();
+  d.canUndo = document_.canUndo();
+  d.canRedo = document_.canRedo();
+  d.undoLabel = document_.undoLabel();
+  d.redoLabel = document_.redoLabel();
+  const std::string title = "sculpt - " + d.title;
+  if (title != lastTitle_ && !options_.headless) glfwSetWindowTitle(window_, title.c_str());
+  lastTitle_ = title;
+  // The window is closing: ask about unsaved changes first (not when a test closes it).
+  if (!options_.headless && glfwWindowShouldClose(window_) && document_.dirty() &&
+      !closeConfirmed_ && options_.quitAfter <= 0.0) {
+    glfwSetWindowShouldClose(window_, 0);
+    d.closePrompt = true;
+  }
+}
+
+}  // namespace sculpt::app

@@ -1,0 +1,109 @@
+#include "sculpt/tool_panel.h"
+
+#include <imgui.h>
+
+namespace sculpt::app {
+namespace {
+
+void mirrorSettings(ToolState& t);
+
+constexpr double kExtrudeMin = 0.05, kExtrudeMax = 5.0;
+
+bool logSliderDouble(const char* label, double* value, double lo, double hi, const char* format) {
+  return ImGui::SliderScalar(label, ImGuiDataType_Double, value, &lo, &hi, format,
+                             ImGuiSliderFlags_Logarithmic | ImGuiSliderFlags_AlwaysClamp);
+}
+
+void brushSettings(ToolState& t) {
+  ImGui::SliderFloat("Radius", &t.radiusPixels, 2.0f, 400.0f, "%.0f px", ImGuiSliderFlags_Logarithmic);
+  if (ImGui::IsItemHovered()) ImGui::SetTooltip("F + drag, or [ and ]");
+  if (t.tool != ToolKind::Pin) {
+    ImGui::SliderFloat("Strength", &t.strength, 0.0f, 1.0f, "%.2f");
+    if (ImGui::IsItemHovered()) ImGui::SetTooltip("Shift+F + drag");
+    int falloff = static_cast<int>(t.falloff);
+    if (ImGui::Combo("Falloff", &falloff, "Smooth\0Sphere\0Linear\0Sharp\0Constant\0"))
+      t.falloff = static_cast<Falloff>(falloff);
+  }
+  if (t.tool == ToolKind::Paint) mirrorSettings(t);
+}
+
+// Symmetry planes through the centre of the control mesh's box (paint and topology).
+void mirrorSettings(ToolState& t) {
+  ImGui::TextUnformatted("Mirror");
+  ImGui::SameLine();
+  ImGui::Checkbox("X", &t.mirrorX);
+  ImGui::SameLine();
+  ImGui::Checkbox("Y", &t.mirrorY);
+  ImGui::SameLine();
+  ImGui::Checkbox("Z", &t.mirrorZ);
+}
+
+}  // namespace
+
+void drawToolSettings(AppModel& m) {
+  ToolState& t = m.tools;
+  ImGui::TextDisabled("Tools");
+  for (int k = 0; k < kToolCount; ++k) {
+    const auto tool = static_cast<ToolKind>(k);
+    if (ImGui::RadioButton(toolName(tool), t.tool == tool)) {
+      t.tool = tool;
+      if (tool == ToolKind::Topology) m.display.showControlMesh = true;  // what it edits
+    }
+  }
+  ImGui::Separator();
+  ImGui::PushItemWidth(-ImGui::GetFontSize() * 4.5f);
+  switch (t.tool) {
+    case ToolKind::Pull:
+      ImGui::TextWrapped("Drag on the surface. Ctrl pushes.");
+      ImGui::Checkbox("Keep spring on release", &t.keepOnRelease);
+      break;
+    case ToolKind::Inflate:
+      ImGui::TextWrapped("Hold on the surface. Ctrl deflates.");
+      brushSettings(t);
+      logSliderDouble("Pressure", &t.pressure, 1e2, 1e7, "%.3g Pa");
+      break;
+    case ToolKind::Curve:
+      ImGui::TextWrapped("Draw a curve on the surface, then drag it with Shift.");
+      ImGui::Checkbox("Smooth profile", &t.smoothCurve);
+      break;
+    case ToolKind::Paint: {
+      ImGui::TextWrapped("Paint into the volume. Ctrl+click picks the value.");
+      int field = static_cast<int>(t.field);
+      if (ImGui::Combo("Field", &field, "Young's modulus\0Density\0Damping\0"))
+        t.field = static_cast<PaintField>(field);
+      if (t.field == PaintField::Youngs)
+        logSliderDouble("Value", &t.paint.youngs, 1e3, 1e9, "%.3g Pa");
+      else if (t.field == PaintField::Density)
+        logSliderDouble("Value", &t.paint.density, 1.0, 1e5, "%.4g kg/m^3");
+      else
+        logSliderDouble("Value", &t.paint.damping, 0.01, 1e5, "%.3g kg/m^3/s");
+      brushSettings(t);
+      break;
+    }
+    case ToolKind::Pin:
+      ImGui::TextWrapped("Paint pins on control points. Ctrl unpins.");
+      brushSettings(t);
+      break;
+    case ToolKind::Topology: {
+      int operation = static_cast<int>(t.operation);
+      const auto name = [](void*, int i, const char** out) {
+        *out = topologyToolName(static_cast<TopologyTool>(i));
+        return true;
+      };
+      if (ImGui::Combo("##operation", &operation, name, nullptr, kTopologyToolCount))
+        t.operation = static_cast<TopologyTool>(operation);
+      if (t.operation == TopologyTool::Extrude)
+        ImGui::SliderScalar("Distance", ImGuiDataType_Double, &t.extrudeCells,
+                            &kExtrudeMin, &kExtrudeMax, "%.2f cells");
+      if (!needsTwoFaces(t.operation)) mirrorSettings(t);
+      ImGui::TextWrapped(needsTwoFaces(t.operation)
+                             ? "Click two boundary faces of the control mesh."
+                             : "Click a boundary face of the control mesh.");
+      if (!m.topologySelection.empty()) ImGui::TextWrapped("%s", m.topologySelection.c_str());
+      break;
+    }
+  }
+  ImGui::PopItemWidth();
+}
+
+}  // namespace sculpt::app

@@ -1,0 +1,102 @@
+#include "sculpt/tool_state.h"
+
+#include <algorithm>
+#include <cmath>
+
+namespace sculpt::app {
+
+const char* toolName(ToolKind tool) {
+  static const char* const kNames[] = {"Pull / push", "Inflate / deflate", "Curve",
+                                       "Paint material", "Pin / unpin", "Topology"};
+  return kNames[static_cast<int>(tool)];
+}
+
+bool isBrushTool(ToolKind tool) {
+  return tool == ToolKind::Inflate || tool == ToolKind::Paint || tool == ToolKind::Pin;
+}
+
+const char* topologyToolName(TopologyTool operation) {
+  static const char* const kNames[] = {"Extrude face", "Delete cell",  "Subdivide cell",
+                                       "Bridge two faces", "Weld two faces", "Crease face edges",
+                                       "Corner at face vertices"};
+  return kNames[static_cast<int>(operation)];
+}
+
+bool needsTwoFaces(TopologyTool operation) {
+  return operation == TopologyTool::Bridge || operation == TopologyTool::Weld;
+}
+
+MaterialBrushSettings paintBrush(const ToolState& state, double radius,
+                                 const Eigen::Vector3d& mirrorCentre) {
+  MaterialBrushSettings brush;
+  brush.radius = radius;
+  brush.strength = state.strength;
+  brush.falloff = state.falloff;
+  brush.target = state.paint;
+  brush.fields = {state.field == PaintField::Density, state.field == PaintField::Damping,
+                  state.field == PaintField::Youngs, false};
+  brush.mirror = {state.mirrorX, state.mirrorY, state.mirrorZ, mirrorCentre};
+  return brush;
+}
+
+namespace {
+
+template <typename T>
+T get(const ToolSettings& settings, const std::string& key, T fallback) {
+  const auto it = settings.find(key);
+  if (it == settings.end() || !std::holds_alternative<T>(it->second)) return fallback;
+  return std::get<T>(it->second);
+}
+
+double clampFinite(double value, double lo, double hi, double fallback) {
+  return std::isfinite(value) ? std::clamp(value, lo, hi) : fallback;
+}
+
+int clampIndex(double value, int count, int fallback) {
+  return std::isfinite(value) && value >= 0 && value < count ? static_cast<int>(value) : fallback;
+}
+
+}  // namespace
+
+void storeToolState(const ToolState& s, ToolSettings& t) {
+  t["tool.kind"] = static_cast<double>(static_cast<int>(s.tool));
+  t["tool.radiusPixels"] = static_cast<double>(s.radiusPixels);
+  t["tool.strength"] = static_cast<double>(s.strength);
+  t["tool.falloff"] = std::string(falloffName(s.falloff));
+  t["tool.mirrorX"] = s.mirrorX;
+  t["tool.mirrorY"] = s.mirrorY;
+  t["tool.mirrorZ"] = s.mirrorZ;
+  t["tool.keepOnRelease"] = s.keepOnRelease;
+  t["tool.pressure"] = s.pressure;
+  t["tool.paintField"] = static_cast<double>(static_cast<int>(s.field));
+  t["tool.paintYoungs"] = s.paint.youngs;
+  t["tool.paintDensity"] = s.paint.density;
+  t["tool.paintDamping"] = s.paint.damping;
+  t["tool.smoothCurve"] = s.smoothCurve;
+  t["tool.topologyOperation"] = static_cast<double>(static_cast<int>(s.operation));
+  t["tool.extrudeCells"] = s.extrudeCells;
+}
+
+ToolState loadToolState(const ToolSettings& t) {
+  ToolState s;
+  s.tool = static_cast<ToolKind>(clampIndex(get(t, "tool.kind", 0.0), kToolCount, 0));
+  s.radiusPixels = static_cast<float>(clampFinite(get(t, "tool.radiusPixels", 50.0), 2, 1000, 50));
+  s.strength = static_cast<float>(clampFinite(get(t, "tool.strength", 0.5), 0, 1, 0.5));
+  s.falloff = parseFalloff(get(t, "tool.falloff", std::string("smooth"))).value_or(Falloff::Smooth);
+  s.mirrorX = get(t, "tool.mirrorX", true);
+  s.mirrorY = get(t, "tool.mirrorY", false);
+  s.mirrorZ = get(t, "tool.mirrorZ", false);
+  s.keepOnRelease = get(t, "tool.keepOnRelease", false);
+  s.pressure = clampFinite(get(t, "tool.pressure", s.pressure), 1.0, 1e9, 3e4);
+  s.field = static_cast<PaintField>(clampIndex(get(t, "tool.paintField", 0.0), 3, 0));
+  s.paint.youngs = clampFinite(get(t, "tool.paintYoungs", s.paint.youngs), 1e3, 1e9, 3e7);
+  s.paint.density = clampFinite(get(t, "tool.paintDensity", s.paint.density), 1.0, 1e5, 3000);
+  s.paint.damping = clampFinite(get(t, "tool.paintDamping", s.paint.damping), 0.0, 1e5, 2000);
+  s.smoothCurve = get(t, "tool.smoothCurve", true);
+  s.operation = static_cast<TopologyTool>(
+      clampIndex(get(t, "tool.topologyOperation", 0.0), kTopologyToolCount, 0));
+  s.extrudeCells = clampFinite(get(t, "tool.extrudeCells", 1.0), 0.05, 10.0, 1.0);
+  return s;
+}
+
+}  // namespace sculpt::app

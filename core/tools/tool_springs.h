@@ -1,0 +1,60 @@
+#pragma once
+// The zero-length springs (PenaltySpringForm) that the drag tools (PullTool, CurveTool) attach
+// to material points: the held ones follow the drag; release either lets them go (removed, the
+// solid relaxes under its other loads) or keeps them, each target moved to where its point is at
+// release, so the solid holds its new shape there. Kept springs stay until clearKept() or the
+// set's destruction. Keeps a reference to the simulator, which must outlive it.
+
+#include <Eigen/Core>
+#include <vector>
+
+#include "sim/load_forms.h"
+#include "sim/material_point.h"
+#include "sim/simulator.h"
+
+namespace sculpt {
+
+enum class ReleaseMode { LetGo, Keep };
+
+/// Edge length of a typical element: cbrt(rest volume / #elements) (m).
+double typicalCellSize(const FemModel& model);
+
+/// 10 x E x cell size (N/m), E the largest Young's modulus of the Gauss samples: a spring about
+/// as stiff as a few elements, so the grabbed point follows the target closely without making
+/// the system badly conditioned.
+double defaultPullStiffness(const FemModel& model);
+
+/// `stiffness` when > 0, else defaultPullStiffness(model). Throws std::invalid_argument
+/// ("<tool>: the spring stiffness is not finite.") for a non-finite value.
+double toolStiffness(const FemModel& model, double stiffness, const char* tool);
+
+/// Current positions of material points (the simulator's control points through the nodes).
+std::vector<Eigen::Vector3d> currentPositions(Simulator& simulator,
+                                              const std::vector<MaterialPoint>& points);
+
+class ToolSprings {
+ public:
+  explicit ToolSprings(Simulator& simulator) : simulator_(simulator) {}
+  ~ToolSprings();
+  ToolSprings(const ToolSprings&) = delete;
+  ToolSprings& operator=(const ToolSprings&) = delete;
+
+  Simulator& simulator() const { return simulator_; }
+  /// Adds a held spring (stiffness > 0, N/m) from `point` to `target`.
+  PenaltySpringForm& add(const MaterialPoint& point, const Eigen::Vector3d& target,
+                         double stiffness);
+  /// The held springs, in the order added (owned by the simulator).
+  const std::vector<PenaltySpringForm*>& held() const { return held_; }
+  /// Lets go of (or keeps) every held spring.
+  void release(ReleaseMode mode);
+  /// Removes the springs kept by release(Keep).
+  void clearKept();
+  size_t numKept() const { return kept_.size(); }
+
+ private:
+  Simulator& simulator_;
+  std::vector<PenaltySpringForm*> held_;
+  std::vector<const Form*> kept_;
+};
+
+}  // namespace sculpt

@@ -1,0 +1,410 @@
+// The window driven like a person would (issue 6, point 5): the real SculptApp, offscreen and
+// deterministic (simulation stepped once per frame), with mouse and keys fed through ImGui's IO.
+// It pulls the bunny, paints a stiff ear, extrudes a face of the cage and undoes it, checking the
+// effect of each step on the scene and on the project. With SCULPT_SESSION_IMAGES set to a
+// folder, each step's screenshot is written there (the README's images come from this test).
+
+#include "render/gl.h"
+#define GLFW_INCLUDE_NONE
+#include <GLFW/glfw3.h>
+#include <gtest/gtest.h>
+
+#include <chrono>
+#include <cstdlib>
+#include <filesystem>
+#include <fstream>
+#include <functional>
+#include <limits>
+#include <memory>
+#include <thread>
+
+#include "edit/topology_edit.h"
+#include "io/control_mesh_json.h"
+#include "mesh/validation.h"
+#include "project/project_file.h"
+#include "sculpt/sculpt_app.h"
+#include "support/gl_context.h"
+
+namespace sculpt::app {
+namespace {
+
+namespace fs = std::filesystem;
+
+// The centroid of the boundary face of `mesh` with the highest score(centroid, unit outward
+// normal); faces scoring NaN are skipped.
+Eigen::Vector3d bestFaceCentre(
+    const CellComplex& mesh,
+    const std::function<double(const Eigen::Vector3d&, const Eigen::Vector3d&)>& score) {
+  double best = -std::numeric_limits<double>::infinity();
+  Eigen::Vector3d centre = Eigen::Vector3d::Zero();
+  for (const FaceRef& f : boundaryFaces(mesh)) {
+    const auto loop = mesh.cellFace(f.cell, f.face);
+    Eigen::Vector3d c = Eigen::Vector3d::Zero(), n = Eigen::Vector3d::Zero();
+    for (size_t k = 0; k < loop.size(); ++k) {
+      c += mesh.positions.row(loop[k]).transpose() / static_cast<double>(loop.size());
+      n += mesh.positions.row(loop[k]).transpose().cross(
+          mesh.positions.row(loop[(k + 1) % loop.size()]).transpose());
+    }
+    const double value = score(c, n.normalized());
+    if (value > best) best = value, centre = c;
+  }
+  return centre;
+}
+
+struct Pointer {
+  float x = -1e6f, y = -1e6f;  // window coordinates; far away: not over the view
+  bool left = false, ctrl = false, shift = false;
+  int key = -1;  // held this frame
+};
+
+class SculptSession : public ::testing::Test {
+ protected:
+  void SetUp() override {
+    ASSERT_NE(std::getenv("DISPLAY"), nullptr) << "no X display: run under xvfb-run";
+    ASSERT_TRUE(glfwInit());
+    window_ = sculpt::testing::hiddenGlWindow(1280, 800);
+    ASSERT_NE(window_, nullptr);
+    folder_ = fs::temp_directory_path() / ("sculpt_session_" + std::to_string(::getpid()));
+    fs::create_directories(folder_);
+    if (const char* images = std::getenv("SCULPT_SESSION_IMAGES")) images_ = images;
+  }
+  // The application on `scene` (empty: the default bunny), as `sculpt --headless` would run it.
+  void open(const std::string& scene = {}, bool headless = true) {
+    app_.reset();
+    Options options;
+    options.headless = headless;
+    options.width = 1280, options.height = 800;
+    options.scene = scene;
+    app_ = std::make_unique<SculptApp>(window_, options, std::chrono::steady_clock::now(),
+                                       LoadedPreferences{}, folder_ / "preferences.json");
+    app_->setInputHook([this](ImGuiIO& io, int) {
+      io.MousePos = ImVec2(pointer_.x, pointer_.y);
+      io.MouseDown[0] = pointer_.left;
+      io.KeyCtrl = pointer_.ctrl;
+      io.KeyShift = pointer_.shift;
+      for (bool& down : io.KeysDown) down = false;
+      if (pointer_.key >= 0) io.KeysDown[pointer_.key] = true;
+    });
+  }
+  void TearDown() override {
+    app_.reset();
+    if (window_) glfwDestroyWindow(window_);
+    glfwTerminate();
+    std::error_code ignored;
+    fs::remove_all(folder_, ignored);
+  }
+
+  void frames(int count, const std::string& screenshot = {}) {
+    for (int k = 0; k < count; ++k) {
+      const bool last = k + 1 == count;
+      app_->headlessFrame(last && !screenshot.empty() && !images_.empty()
+                              ? (fs::path(images_) / screenshot).string()
+                              : std::string());
+    }
+  }
+  // Window coordinates of a world point in the 3D view.
+  ImVec2 screen(const Eigen::Vector3d& world) const {
+    const ViewRect view = app_->viewRect();
+    const int w = static_cast<int>(view.max.x - view.min.x), h = static_cast<int>(view.max.y - view.min.y);
+    const glm::vec3 p = app_->camera().project(glm::vec3(world.x(), world.y(), world.z()), w, h);
+    return ImVec2(view.min.x + p.x, view.min.y + p.y);
+  }
+  // A drag from `from` by (dx, dy) pixels over `steps` frames, holding the button at the end.
+  void drag(ImVec2 from, float dx, float dy, int steps) {
+    pointer_.x = from.x, pointer_.y = from.y;
+    frames(1);  // hover: the depth under the cursor is read
+    pointer_.left = true;
+    for (int k = 1; k <= steps; ++k) {
+      pointer_.x = from.x + dx * static_cast<float>(k) / static_cast<float>(steps);
+      pointer_.y = from.y + dy * static_cast<float>(k) / static_cast<float>(steps);
+      frames(1);
+    }
+  }
+  void release() {
+    pointer_.left = false;
+    frames(1);
+  }
+  void press(int key, bool ctrl) {
+    pointer_.key = key, pointer_.ctrl = ctrl;
+    frames(1);
+    pointer_.key = -1, pointer_.ctrl = false;
+    frames(1);
+  }
+  const SceneGeometry& geometry() const { return *app_->sceneView().geometry(); }
+
+  GLFWwindow* window_ = nullptr;
+  fs::path folder_;
+  std::string images_;
+  std::unique_ptr<SculptApp> app_;
+  Pointer pointer_;
+};
+
+TEST_F(SculptSession, PullPaintAStiffEarExtrudeAndUndo) {
+  open();
+  frames(40);  // the bunny is built, hangs and swings
+  ASSERT_TRUE(app_->sceneView().hasGeometry());
+  ASSERT_TRUE(app_->sceneView().frame().physicsReady);
+  const Points& rest = geometry().restPositions;
+  EXPECT_FALSE(app_->document().canUndo());
+
+  // 1. Pull the bunny's lowest point (far from the pinned top layer) 120 px to the right.
+  Eigen::Index low = 0, top = 0;
+  rest.col(1).minCoeff(&low);
+  rest.col(1).maxCoeff(&top);
+  app_->model().tools.tool = ToolKind::Pull;
+  const ImVec2 grabAt = screen(rest.row(low).transpose() + Eigen::Vector3d(0, 0.3, 0));
+  drag(grabAt, 220.0f, 40.0f, 16);
+  frames(30, "sculpt-pull.png");
+  ASSERT_EQ(app_->sceneView().frame().springs.size(), 1u);
+  const auto& [point, target] = app_->sceneView().frame().springs.front();
+  const ImVec2 pointOnScreen = screen(point);
+  EXPECT_GT(pointOnScreen.x - grabAt.x, 20.0f) << "the grabbed point follows the cursor";
+  EXPECT_LT((point - target).norm(), (screen(target).x - grabAt.x) * 1.0)
+      << "the spring pulls the point toward its target";
+  release();
+  frames(5);
+  EXPECT_TRUE(app_->sceneView().frame().springs.empty()) << "release lets go";
+  EXPECT_FALSE(app_->document().canUndo()) << "pulling is not an edit of the project";
+
+  // 2. Paint a stiff ear: Young's modulus 100x the body's, under the highest surface point.
+  ToolState& tools = app_->model().tools;
+  tools.tool = ToolKind::Paint;
+  tools.field = PaintField::Youngs;
+  tools.paint.youngs = 3.0e8;
+  tools.strength = 1.0f;
+  tools.radiusPixels = 45.0f;
+  tools.mirrorX = false;
+  app_->model().display.field = FieldKind::YoungsModulus;
+  const ImVec2 ear = screen(rest.row(top).transpose() - Eigen::Vector3d(0, 0.6, 0));
+  drag(ear, 0.0f, 30.0f, 8);
+  release();
+  frames(3, "sculpt-paint-ear.png");
+  ASSERT_TRUE(app_->document().canUndo());
+  EXPECT_EQ(app_->document().undoLabel(), "Paint Young's modulus");
+  const MaterialSamples& painted = app_->document().project().materials;
+  ASSERT_GT(painted.size(), 0u);
+  size_t stiff = 0;
+  double highest = 0.0;
+  for (size_t q = 0; q < painted.size(); ++q) {
+    highest = std::max(highest, painted.materials[q].youngs);
+    if (painted.materials[q].youngs > 3.0e6 * 1.5) {
+      ++stiff;
+      // Only samples near the ear: within the brush (a few cells) of the highest point.
+      EXPECT_LT((painted.restPositions[q] - rest.row(top).transpose()).norm(), 4.0) << q;
+    }
+  }
+  EXPECT_GT(highest, 1.0e8);
+  EXPECT_GT(stiff, 0u);
+  EXPECT_LT(stiff, painted.size() / 10) << "a brush, not a fill";
+  EXPECT_GT(app_->model().fieldRange.high, 1.0e8) << "the field shows the painted value";
+
+  // 3. Extrude a cage face on the right-hand side that the camera sees (obliquely, so that the
+  //    new cell shows in profile).
+  tools.tool = ToolKind::Topology;
+  tools.operation = TopologyTool::Extrude;
+  app_->model().display.field = FieldKind::None;
+  app_->model().display.showControlMesh = true;
+  const CellComplex before = app_->document().project().controlMesh;
+  const size_t samplesBefore = app_->document().project().materials.size();
+  const std::string bytesBefore = serializeProject(app_->document().project());
+  const glm::vec3 eye = app_->camera().eye(), right = app_->camera().right();
+  const Eigen::Vector3d faceCentre =
+      bestFaceCentre(before, [&](const Eigen::Vector3d& c, const Eigen::Vector3d& n) {
+        const Eigen::Vector3d toEye = Eigen::Vector3d(eye.x, eye.y, eye.z) - c;
+        if (n.dot(toEye.normalized()) < 0.25) return std::numeric_limits<double>::quiet_NaN();
+        return n.dot(Eigen::Vector3d(right.x, right.y, right.z)) + 0.02 * c.y();  // right, high
+      });
+  const ImVec2 faceAt = screen(faceCentre);
+  pointer_ = Pointer{faceAt.x, faceAt.y};
+  frames(2);  // hover highlights the face
+  pointer_.left = true;
+  frames(1);
+  release();
+  frames(6, "sculpt-extrude.png");
+  ASSERT_EQ(app_->document().undoLabel(), "Extrude face");
+  EXPECT_EQ(app_->document().project().controlMesh.numCells(), before.numCells() + 1);
+  EXPECT_EQ(app_->document().project().controlMesh.numVertices(), before.numVertices() + 4);
+  EXPECT_EQ(geometry().controlMesh->numCells(), before.numCells() + 1) << "the scene was rebuilt";
+  EXPECT_GT(app_->document().project().materials.size(), samplesBefore)
+      << "the new cell's Gauss points got materials";
+
+  // 4. Ctrl+Z: the project is byte for byte what it was before the extrusion.
+  pointer_ = Pointer{};
+  press(GLFW_KEY_Z, true);
+  frames(6, "sculpt-extrude-undone.png");
+  EXPECT_EQ(serializeProject(app_->document().project()), bytesBefore);
+  EXPECT_EQ(geometry().controlMesh->numCells(), before.numCells());
+  EXPECT_EQ(app_->document().undoLabel(), "Paint Young's modulus");
+  EXPECT_EQ(app_->document().redoLabel(), "Extrude face");
+  EXPECT_TRUE(app_->document().dirty());
+
+  // 5. Ctrl+Z again undoes the paint: uniform material everywhere again.
+  press(GLFW_KEY_Z, true);
+  frames(3);
+  EXPECT_EQ(app_->document().project().materials.size(), 0u);
+  EXPECT_FALSE(app_->document().dirty()) << "back at the state the scene was loaded in";
+  EXPECT_LT(app_->model().fieldRange.high, 1.0e8);
+}
+
+// Volume of the control mesh with the control points where the simulation has them.
+double deformedVolume(const CellComplex& mesh, const Points& control) {
+  CellComplex deformed = mesh;
+  deformed.positions = control;
+  double volume = 0.0;
+  for (uint32_t c = 0; c < deformed.numCells(); ++c) volume += cellVolume(deformed, c);
+  return volume;
+}
+
+TEST_F(SculptSession, InflatePinCurveSaveAndOpenOnBlock3) {
+  const std::string block3 = std::string(SCULPT_SOURCE_DIR) + "/assets/block3.json";
+  open(block3);
+  frames(30);
+  ASSERT_TRUE(app_->sceneView().frame().physicsReady);
+  const CellComplex mesh = *geometry().controlMesh;
+  const ViewRect view = app_->viewRect();
+  const ImVec2 middle(0.5f * (view.min.x + view.max.x), 0.5f * (view.min.y + view.max.y));
+  ToolState& tools = app_->model().tools;
+
+  // Inflate grows the solid while held; Ctrl deflates it below where it started.
+  tools.tool = ToolKind::Inflate;
+  tools.pressure = 3.0e5;
+  tools.strength = 1.0f;
+  tools.radiusPixels = 150.0f;
+  const double settled = deformedVolume(mesh, app_->sceneView().frame().control);
+  drag(middle, 0.0f, 0.0f, 1);
+  frames(25);
+  const double inflated = deformedVolume(mesh, app_->sceneView().frame().control);
+  release();
+  frames(40);
+  pointer_.ctrl = true;
+  drag(middle, 0.0f, 0.0f, 1);
+  frames(25);
+  const double deflated = deformedVolume(mesh, app_->sceneView().frame().control);
+  pointer_.ctrl = false;
+  release();
+  std::printf("block3 volume: settled %.5f, inflated %.5f, deflated %.5f m^3\n", settled, inflated,
+              deflated);
+  EXPECT_GT(inflated, settled * 1.002);
+  EXPECT_LT(deflated, settled * 0.998);
+  EXPECT_FALSE(app_->document().canUndo()) << "inflation is not an edit";
+
+  // Pin paints pins onto control points under the brush (one undo entry); Ctrl unpins.
+  tools.tool = ToolKind::Pin;
+  tools.radiusPixels = 120.0f;
+  const size_t pinsBefore = app_->document().project().pins.size();
+  drag(ImVec2(middle.x - 40, middle.y + 40), 80.0f, 0.0f, 6);
+  release();
+  frames(2);
+  ASSERT_TRUE(app_->document().canUndo());
+  EXPECT_EQ(app_->document().undoLabel(), "Pin");
+  const size_t pinsPainted = app_->document().project().pins.size();
+  EXPECT_GT(pinsPainted, pinsBefore);
+  pointer_.ctrl = true;  // (starting 10 px away: a press where the last one was is a double-click)
+  drag(ImVec2(middle.x - 30, middle.y + 40), 70.0f, 0.0f, 6);
+  pointer_.ctrl = false;
+  release();
+  frames(2);
+  EXPECT_EQ(app_->document().undoLabel(), "Unpin");
+  EXPECT_LT(app_->document().project().pins.size(), pinsPainted);
+  press(GLFW_KEY_Z, true);
+  press(GLFW_KEY_Z, true);
+  EXPECT_EQ(app_->document().project().pins.size(), pinsBefore);
+  EXPECT_FALSE(app_->document().canUndo());
+  EXPECT_TRUE(app_->document().canRedo());
+
+  // Curve: draw across the solid, then Shift+drag it up: one spring per curve sample.
+  tools.tool = ToolKind::Curve;
+  drag(ImVec2(middle.x - 80, middle.y + 20), 160.0f, 0.0f, 16);
+  release();
+  pointer_.shift = true;
+  drag(ImVec2(middle.x, middle.y + 20), 0.0f, -60.0f, 6);
+  frames(10, "sculpt-curve.png");
+  const size_t springs = app_->sceneView().frame().springs.size();
+  EXPECT_GE(springs, 2u);
+  pointer_.shift = false;
+  release();
+  frames(2);
+  EXPECT_TRUE(app_->sceneView().frame().springs.empty());
+
+  // Save As, then open the file in a new window: the same project, byte for byte.
+  tools.tool = ToolKind::Paint;
+  tools.mirrorX = true;
+  drag(ImVec2(middle.x + 60, middle.y), 0.0f, 20.0f, 4);
+  release();
+  frames(2);
+  ASSERT_TRUE(app_->document().dirty());
+  const fs::path saved = folder_ / "block3-edit";  // the extension is added
+  app_->model().requests.saveAs = saved.string();
+  frames(1);
+  const fs::path file = folder_ / "block3-edit.sculpt";
+  ASSERT_TRUE(fs::exists(file));
+  EXPECT_FALSE(app_->document().dirty());
+  EXPECT_EQ(app_->document().title(), "block3-edit.sculpt");
+  std::ifstream in(file, std::ios::binary);
+  const std::string bytes((std::istreambuf_iterator<char>(in)), {});
+  EXPECT_EQ(serializeProject(app_->document().project()), bytes);
+  open(file.string());
+  frames(3);
+  EXPECT_EQ(serializeProject(app_->document().project()), bytes);
+  EXPECT_FALSE(app_->document().dirty());
+  EXPECT_GT(app_->document().project().materials.size(), 0u);
+  EXPECT_EQ(geometry().controlMesh->numCells(), mesh.numCells());
+
+  // Symmetry applies to topology too: extruding a face on the right extrudes its mirror image
+  // on the left, in one undo entry.
+  app_->model().tools.tool = ToolKind::Topology;
+  app_->model().tools.operation = TopologyTool::Extrude;
+  app_->model().tools.mirrorX = true;
+  const glm::vec3 right = app_->camera().right();
+  const Eigen::Vector3d faceCentre = bestFaceCentre(
+      app_->document().project().controlMesh, [&](const Eigen::Vector3d& c, const Eigen::Vector3d& n) {
+        if (std::abs(n.x()) < 0.99) return std::numeric_limits<double>::quiet_NaN();  // across x
+        return n.dot(Eigen::Vector3d(right.x, right.y, right.z)) - 0.01 * c.norm();
+      });
+  const ImVec2 faceAt = screen(faceCentre);
+  pointer_ = Pointer{faceAt.x, faceAt.y};
+  frames(2);
+  pointer_.left = true;
+  frames(1);
+  release();
+  frames(3);
+  EXPECT_EQ(app_->document().project().controlMesh.numCells(), mesh.numCells() + 2);
+  EXPECT_EQ(app_->document().undoLabel().rfind("Extrude", 0), 0u);
+  press(GLFW_KEY_Z, true);
+  EXPECT_EQ(app_->document().project().controlMesh.numCells(), mesh.numCells());
+}
+
+TEST_F(SculptSession, WorkLeftByACrashIsOfferedAndRecovered) {
+  // What an autosave leaves behind when the program dies: an untitled project's recovery file.
+  Project lost;
+  lost.controlMesh = loadControlMeshJson(std::string(SCULPT_SOURCE_DIR) + "/assets/block3.json");
+  lost.pins = {0, 1, 2, 3};
+  lost.tools["scene.source"] = std::string("control");
+  const fs::path recovery = folder_ / "untitled.sculpt.recovery";
+  saveProject(lost, recovery);
+  open({}, false);  // the interactive window (worker threads), drawn offscreen here
+  for (int k = 0; k < 600 && app_->model().document.recoveryOffer.empty(); ++k) {
+    frames(1);
+    std::this_thread::sleep_for(std::chrono::milliseconds(10));
+  }
+  ASSERT_EQ(app_->model().document.recoveryOffer, recovery.string())
+      << app_->document().recoveryPath() << " geometry " << app_->sceneView().hasGeometry();
+  frames(2, "sculpt-recovery-offer.png");
+  app_->model().requests.recover = true;
+  frames(1);
+  EXPECT_TRUE(app_->model().document.recoveryOffer.empty());
+  EXPECT_TRUE(app_->document().dirty()) << "recovered work is not saved yet";
+  EXPECT_TRUE(app_->document().path().empty()) << "an untitled project stays untitled";
+  EXPECT_EQ(app_->document().project().pins, lost.pins);
+  EXPECT_TRUE(sameControlMesh(app_->document().project().controlMesh, lost.controlMesh));
+  for (int k = 0; k < 600 && !(app_->sceneView().hasGeometry() &&
+                               app_->sceneView().geometry()->controlMesh->numCells() == 27);
+       ++k) {
+    frames(1);
+    std::this_thread::sleep_for(std::chrono::milliseconds(10));
+  }
+  EXPECT_EQ(app_->sceneView().geometry()->controlMesh->numCells(), 27u) << "block3 is shown";
+}
+
+}  // namespace
+}  // namespace sculpt::app
