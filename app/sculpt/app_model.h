@@ -44,6 +44,7 @@ struct Requests {
 /// The document as the panels show it (document.h keeps the real state).
 struct DocumentStatus {
   std::string title = "untitled";  ///< with " *" when there are unsaved changes
+  std::string name = "untitled";   ///< the file name alone
   bool dirty = false, hasPath = false;
   bool canUndo = false, canRedo = false;
   std::string undoLabel, redoLabel;

@@ -117,7 +117,7 @@ void dialogs(AppModel& m) {
   if (m.document.closePrompt) ImGui::OpenPopup("Unsaved changes");
   ImGui::SetNextWindowPos(centre, ImGuiCond_Appearing, ImVec2(0.5f, 0.5f));
   if (ImGui::BeginPopupModal("Unsaved changes", nullptr, ImGuiWindowFlags_AlwaysAutoResize)) {
-    ImGui::Text("Save changes to %s before closing?", m.document.title.c_str());
+    ImGui::Text("Save changes to %s before closing?", m.document.name.c_str());
     if (ImGui::Button("Save")) {
       r.closeSave = true;
       m.document.closePrompt = false;

@@ -140,11 +140,14 @@ void SculptApp::openProject(const std::filesystem::path& path, const std::filesy
   const bool recovered = from != path;
   document_.start(std::move(project), path, recovered);  // recovered work is unsaved work
   documentSource_ = scene;
-  camera_.setPivot(glm::vec3(camera.pivot.x(), camera.pivot.y(), camera.pivot.z()));
-  camera_.setOrientation(static_cast<float>(camera.yawRad), static_cast<float>(camera.pitchRad));
-  camera_.setDistance(static_cast<float>(camera.distance));
-  camera_.setOrthographic(camera.orthographic);
-  cameraFramed_ = true;
+  // A project written without a view (a script, another program) is framed when it shows up.
+  cameraFramed_ = !(camera == CameraState{});
+  if (cameraFramed_) {
+    camera_.setPivot(glm::vec3(camera.pivot.x(), camera.pivot.y(), camera.pivot.z()));
+    camera_.setOrientation(static_cast<float>(camera.yawRad), static_cast<float>(camera.pitchRad));
+    camera_.setDistance(static_cast<float>(camera.distance));
+    camera_.setOrthographic(camera.orthographic);
+  }
   model_.sceneFile = path.string();
   if (!recovered && !path.empty()) {
     preferences_.addRecentFile(std::filesystem::absolute(path).string());
@@ -220,6 +223,7 @@ void SculptApp::syncDocument() {
   if (const std::string problem = document_.tick(); !problem.empty()) model_.toast(problem, true, 8.0);
   DocumentStatus& d = model_.document;
   d.title = document_.title();
+  d.name = documentName(document_.path());
   d.dirty = document_.dirty();
   d.hasPath = !document_.path().empty();
   d.canUndo = document_.canUndo();

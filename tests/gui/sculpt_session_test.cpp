@@ -404,6 +404,17 @@ TEST_F(SculptSession, WorkLeftByACrashIsOfferedAndRecovered) {
     std::this_thread::sleep_for(std::chrono::milliseconds(10));
   }
   EXPECT_EQ(app_->sceneView().geometry()->controlMesh->numCells(), 27u) << "block3 is shown";
+
+  // Closing with unsaved changes asks first; "Don't save" closes and removes the recovery file.
+  glfwSetWindowShouldClose(window_, 1);
+  frames(2, "sculpt-close-prompt.png");
+  EXPECT_TRUE(app_->model().document.closePrompt);
+  EXPECT_FALSE(glfwWindowShouldClose(window_)) << "the window stays until answered";
+  app_->model().requests.closeDiscard = true;
+  app_->model().document.closePrompt = false;
+  frames(1);
+  EXPECT_TRUE(glfwWindowShouldClose(window_));
+  EXPECT_FALSE(fs::exists(recovery)) << "closing without saving, on purpose, keeps no recovery";
 }
 
 }  // namespace
