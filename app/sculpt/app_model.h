@@ -87,6 +87,7 @@ struct AppModel {
   DocumentStatus document;
   std::array<char, 1024> saveAsInput{};
   bool openSaveAsDialog = false;  ///< Ctrl+Shift+S, or Save of an untitled project (next frame)
+  bool openOpenDialog = false;    ///< Ctrl+O (next frame)
   /// The topology tool's face selection and hover, as "cell c, face f" for the panel.
   std::string topologySelection;
 

@@ -59,6 +59,7 @@ constexpr std::array<ActionInfo, kActionCount> kActions{{
     {Action::BrushSmaller, "brush_smaller", "Smaller brush (F + drag: radius)", ActionGroup::Edit},
     {Action::BrushLarger, "brush_larger", "Larger brush (Shift+F + drag: strength)",
      ActionGroup::Edit},
+    {Action::Open, "open", "Open a project or a scene", ActionGroup::File},
     {Action::Save, "save", "Save the project", ActionGroup::File},
     {Action::SaveAs, "save_as", "Save the project as", ActionGroup::File},
     {Action::ToggleHelp, "toggle_help", "This help", ActionGroup::File},
@@ -288,6 +289,7 @@ KeyMap KeyMap::defaults() {
   bind(GLFW_KEY_LEFT_BRACKET, kNone, Action::BrushSmaller);
   bind(GLFW_KEY_RIGHT_BRACKET, kNone, Action::BrushLarger);
   // File and window
+  bind(GLFW_KEY_O, kCtrl, Action::Open);
   bind(GLFW_KEY_S, kCtrl, Action::Save);
   bind(GLFW_KEY_S, kCtrl | kShift, Action::SaveAs);
   bind(GLFW_KEY_SLASH, kShift, Action::ToggleHelp);  // '?'

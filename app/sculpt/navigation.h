@@ -63,6 +63,7 @@ enum class Action {
   BrushSmaller,
   BrushLarger,
   // File and window
+  Open,
   Save,
   SaveAs,
   ToggleHelp,

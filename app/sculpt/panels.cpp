@@ -25,6 +25,7 @@ void menuBar(AppModel& m) {
   bool openSaveAs = false;
   if (ImGui::BeginMenu("File")) {
     if (ImGui::MenuItem("New (default bunny)")) r.loadScene = "<default>";
+    if (ImGui::MenuItem("Open...", "Ctrl+O")) m.openOpenDialog = true;
     if (ImGui::MenuItem("Save", "Ctrl+S")) r.save = true;
     if (ImGui::MenuItem("Save As...", "Ctrl+Shift+S")) openSaveAs = true;
     ImGui::Separator();
@@ -93,27 +94,39 @@ void menuBar(AppModel& m) {
     m.openSaveAsDialog = false;
     ImGui::OpenPopup("Save project as");
   }
+  if (m.openOpenDialog) {
+    m.openOpenDialog = false;
+    ImGui::OpenPopup("Open");
+  }
 }
 
-// Modal dialogs: Save As (a path), unsaved changes on close, recovery after a crash.
+// A modal asking for a path; `accepted` receives it.
+void pathDialog(const char* title, const char* prompt, const char* action,
+                std::array<char, 1024>& input, std::string& accepted) {
+  ImGui::SetNextWindowPos(ImGui::GetMainViewport()->GetCenter(), ImGuiCond_Appearing,
+                          ImVec2(0.5f, 0.5f));
+  if (!ImGui::BeginPopupModal(title, nullptr, ImGuiWindowFlags_AlwaysAutoResize)) return;
+  ImGui::TextUnformatted(prompt);
+  ImGui::SetNextItemWidth(scaled(420));
+  if (ImGui::IsWindowAppearing()) ImGui::SetKeyboardFocusHere();
+  const bool entered = ImGui::InputText("##path", input.data(), input.size(),
+                                        ImGuiInputTextFlags_EnterReturnsTrue);
+  if ((ImGui::Button(action) || entered) && input[0] != 0) {
+    accepted = std::string(input.data());
+    ImGui::CloseCurrentPopup();
+  }
+  ImGui::SameLine();
+  if (ImGui::Button("Cancel")) ImGui::CloseCurrentPopup();
+  ImGui::EndPopup();
+}
+
+// Modal dialogs: Save As and Open (a path), unsaved changes on close, recovery after a crash.
 void dialogs(AppModel& m) {
   Requests& r = m.requests;
   const ImVec2 centre = ImGui::GetMainViewport()->GetCenter();
-  ImGui::SetNextWindowPos(centre, ImGuiCond_Appearing, ImVec2(0.5f, 0.5f));
-  if (ImGui::BeginPopupModal("Save project as", nullptr, ImGuiWindowFlags_AlwaysAutoResize)) {
-    ImGui::TextUnformatted("File (.sculpt):");
-    ImGui::SetNextItemWidth(scaled(420));
-    if (ImGui::IsWindowAppearing()) ImGui::SetKeyboardFocusHere();
-    const bool entered = ImGui::InputText("##saveas", m.saveAsInput.data(), m.saveAsInput.size(),
-                                          ImGuiInputTextFlags_EnterReturnsTrue);
-    if ((ImGui::Button("Save") || entered) && m.saveAsInput[0] != 0) {
-      r.saveAs = std::string(m.saveAsInput.data());
-      ImGui::CloseCurrentPopup();
-    }
-    ImGui::SameLine();
-    if (ImGui::Button("Cancel")) ImGui::CloseCurrentPopup();
-    ImGui::EndPopup();
-  }
+  pathDialog("Save project as", "File (.sculpt):", "Save", m.saveAsInput, r.saveAs);
+  pathDialog("Open", "A project (.sculpt), a control mesh (.json) or a surface (.obj, .gltf, .glb):",
+             "Open", m.scenePathInput, r.loadScene);
   if (m.document.closePrompt) ImGui::OpenPopup("Unsaved changes");
   ImGui::SetNextWindowPos(centre, ImGuiCond_Appearing, ImVec2(0.5f, 0.5f));
   if (ImGui::BeginPopupModal("Unsaved changes", nullptr, ImGuiWindowFlags_AlwaysAutoResize)) {
@@ -192,7 +205,7 @@ void scenePanel(AppModel& m) {
   SceneSettings& s = m.settings;
   if (ImGui::CollapsingHeader("Scene", ImGuiTreeNodeFlags_DefaultOpen)) {
     ImGui::TextWrapped("%s", m.status.description.c_str());
-    ImGui::InputTextWithHint("##path", "file.json / .obj / .gltf / .glb", m.scenePathInput.data(),
+    ImGui::InputTextWithHint("##path", "file.sculpt / .json / .obj / .glb", m.scenePathInput.data(),
                              m.scenePathInput.size());
     ImGui::SameLine();
     if (ImGui::Button("Load") && m.scenePathInput[0] != 0)

@@ -281,6 +281,7 @@ void SculptApp::runAction(Action action) {
     case Action::RedoAlternative: r.redo = true; break;
     case Action::Save: r.save = true; break;
     case Action::SaveAs: model_.openSaveAsDialog = true; break;
+    case Action::Open: model_.openOpenDialog = true; break;
     case Action::BrushSmaller:
       model_.tools.radiusPixels = std::max(2.0f, model_.tools.radiusPixels / 1.25f);
       break;

@@ -359,6 +359,7 @@ TEST(KeyMap, DefaultsHoldTheBindingsOfUx) {
   EXPECT_EQ(keys.actionFor(GLFW_KEY_Z, GLFW_MOD_CONTROL | GLFW_MOD_SHIFT), Action::Redo);
   EXPECT_EQ(keys.actionFor(GLFW_KEY_Y, GLFW_MOD_CONTROL), Action::RedoAlternative);
   EXPECT_EQ(keys.actionFor(GLFW_KEY_S, GLFW_MOD_CONTROL), Action::Save);
+  EXPECT_EQ(keys.actionFor(GLFW_KEY_O, GLFW_MOD_CONTROL), Action::Open);
   EXPECT_EQ(keys.actionFor(GLFW_KEY_S, GLFW_MOD_CONTROL | GLFW_MOD_SHIFT), Action::SaveAs);
   EXPECT_EQ(keys.actionFor(GLFW_KEY_LEFT_BRACKET, 0), Action::BrushSmaller);
   EXPECT_EQ(keys.actionFor(GLFW_KEY_RIGHT_BRACKET, 0), Action::BrushLarger);
