@@ -5,6 +5,8 @@
 
 #include <gtest/gtest.h>
 
+#include <cstdio>
+
 #include <cmath>
 #include <memory>
 #include <string>
@@ -67,6 +69,8 @@ TEST(PhysicalTools, PullMovesThePointTowardTheTargetAndReleasesCleanly) {
   const double releasedOffset = (pointAt(*s.model, s.simulator->positions(), point) - anchor).norm();
   play(player, 5.0);
   const double relaxedOffset = (pointAt(*s.model, s.simulator->positions(), point) - anchor).norm();
+  std::printf("pull: point to target %.4f m before, %.4f m held; offset %.4f m at release, "
+              "%.4f m after 4 s\n", unpulled, pulled, releasedOffset, relaxedOffset);
   EXPECT_GT(releasedOffset, 0.5);
   EXPECT_LT(relaxedOffset, 0.1 * releasedOffset);
 }
@@ -101,6 +105,7 @@ double volumeAfterPressure(double pressure) {
 TEST(PhysicalTools, InflateGrowsAndDeflateShrinksTheVolume) {
   // Bulk modulus K = E / (3 (1 - 2 nu)) = 8.3e4 Pa: 4000 Pa changes the volume by about 5%.
   const double inflated = volumeAfterPressure(4000), deflated = volumeAfterPressure(-4000);
+  std::printf("volume / rest volume: +4000 Pa %.4f, -4000 Pa %.4f\n", inflated, deflated);
   EXPECT_GT(inflated, 1.02);
   EXPECT_LT(inflated, 1.10);
   EXPECT_LT(deflated, 0.98);
@@ -129,6 +134,7 @@ double topBulge(bool paintStiff) {
 
 TEST(PhysicalTools, PaintedStiffRegionDeformsLessUnderTheSameLoad) {
   const double soft = topBulge(false), stiff = topBulge(true);
+  std::printf("top bulge under the same load: unpainted %.4g m, painted stiff %.4g m\n", soft, stiff);
   EXPECT_GT(soft, 0.0);
   EXPECT_GT(stiff, 0.0);
   EXPECT_LT(stiff, 0.2 * soft) << "soft " << soft << " stiff " << stiff;
