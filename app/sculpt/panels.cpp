@@ -149,7 +149,10 @@ void dialogs(AppModel& m) {
     }
     ImGui::EndPopup();
   }
-  if (!m.document.recoveryOffer.empty()) ImGui::OpenPopup("Recover unsaved work?");
+  // (Not in the first frames: ImGui 1.86 asserts when windows appear for the first time behind a
+  // modal opened in the same frame.)
+  if (!m.document.recoveryOffer.empty() && ImGui::GetFrameCount() > 2)
+    ImGui::OpenPopup("Recover unsaved work?");
   ImGui::SetNextWindowPos(centre, ImGuiCond_Appearing, ImVec2(0.5f, 0.5f));
   if (ImGui::BeginPopupModal("Recover unsaved work?", nullptr, ImGuiWindowFlags_AlwaysAutoResize)) {
     ImGui::Text("The program did not close cleanly. Autosaved work was found:\n%s",

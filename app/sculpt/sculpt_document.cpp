@@ -152,6 +152,11 @@ void SculptApp::openProject(const std::filesystem::path& path, const std::filesy
   if (!recovered && !path.empty()) {
     preferences_.addRecentFile(std::filesystem::absolute(path).string());
     model_.recentScenes = preferences_.recentFiles;
+    if (!options_.headless)  // autosaved work newer than the file: a crash left it
+      if (const auto recovery = findRecovery(path)) {
+        recoveryFile_ = *recovery;
+        model_.document.recoveryOffer = recovery->string();
+      }
   }
   loadDocumentScene();
 }

@@ -21,6 +21,7 @@
 #include "edit/topology_edit.h"
 #include "io/control_mesh_json.h"
 #include "mesh/validation.h"
+#include "project/autosave.h"
 #include "project/project_file.h"
 #include "sculpt/sculpt_app.h"
 #include "support/gl_context.h"
@@ -415,6 +416,25 @@ TEST_F(SculptSession, WorkLeftByACrashIsOfferedAndRecovered) {
   frames(1);
   EXPECT_TRUE(glfwWindowShouldClose(window_));
   EXPECT_FALSE(fs::exists(recovery)) << "closing without saving, on purpose, keeps no recovery";
+}
+
+TEST_F(SculptSession, OpeningAProjectOffersItsNewerRecoveryFile) {
+  Project saved;
+  saved.controlMesh = loadControlMeshJson(std::string(SCULPT_SOURCE_DIR) + "/assets/block3.json");
+  saved.tools["scene.source"] = std::string("control");
+  const fs::path file = folder_ / "work.sculpt";
+  saveProject(saved, file);
+  Project autosaved = saved;
+  autosaved.pins = {7, 8};
+  saveProject(autosaved, recoveryPathFor(file));
+  open(file.string(), false);
+  EXPECT_EQ(app_->model().document.recoveryOffer, recoveryPathFor(file).string());
+  EXPECT_FALSE(app_->document().dirty());
+  app_->model().requests.recover = true;
+  frames(1);
+  EXPECT_EQ(app_->document().path(), file) << "recovered into its own file";
+  EXPECT_TRUE(app_->document().dirty());
+  EXPECT_EQ(app_->document().project().pins, autosaved.pins);
 }
 
 }  // namespace
