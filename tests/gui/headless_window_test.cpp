@@ -232,6 +232,14 @@ TEST_F(HeadlessWindow, BadInputIsExit2) {
             2);
   EXPECT_FALSE(fs::exists(dir_ / "z.png"));
   EXPECT_NE(errors().find("script.json: events[0] (grab)"), std::string::npos) << errors();
+  // A damaged project file: one sentence naming it, exit 2, no image.
+  const fs::path project = dir_ / "damaged.sculpt";
+  std::ofstream(project, std::ios::binary) << std::string("SCULPT\0\1\0\0\0", 11);
+  EXPECT_EQ(run("--headless --scene " + project.string() + " --screenshot " +
+                (dir_ / "w.png").string()),
+            2);
+  EXPECT_FALSE(fs::exists(dir_ / "w.png"));
+  EXPECT_NE(errors().find("damaged.sculpt: the file is truncated"), std::string::npos) << errors();
 }
 
 }  // namespace
