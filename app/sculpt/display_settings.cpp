@@ -9,6 +9,7 @@ std::string_view fieldName(FieldKind field) {
     case FieldKind::Density: return "density";
     case FieldKind::Displacement: return "displacement";
     case FieldKind::StrainEnergy: return "strain";
+    case FieldKind::Damping: return "damping";
   }
   return "none";
 }
@@ -20,6 +21,7 @@ std::string_view fieldLabel(FieldKind field) {
     case FieldKind::Density: return "Density";
     case FieldKind::Displacement: return "Displacement";
     case FieldKind::StrainEnergy: return "Strain energy density";
+    case FieldKind::Damping: return "Damping";
   }
   return "None";
 }
@@ -31,6 +33,7 @@ std::string_view fieldUnit(FieldKind field) {
     case FieldKind::Density: return "kg/m^3";
     case FieldKind::Displacement: return "m";
     case FieldKind::StrainEnergy: return "J/m^3";
+    case FieldKind::Damping: return "kg/(m^3 s)";
   }
   return "";
 }

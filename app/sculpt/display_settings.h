@@ -10,10 +10,10 @@
 namespace sculpt::app {
 
 /// Scalar fields shown on the surface and on the clipping plane.
-enum class FieldKind { None, YoungsModulus, Density, Displacement, StrainEnergy };
-constexpr std::array<FieldKind, 5> kFieldKinds = {FieldKind::None, FieldKind::YoungsModulus,
-                                                  FieldKind::Density, FieldKind::Displacement,
-                                                  FieldKind::StrainEnergy};
+enum class FieldKind { None, YoungsModulus, Density, Displacement, StrainEnergy, Damping };
+constexpr std::array<FieldKind, 6> kFieldKinds = {FieldKind::None,         FieldKind::YoungsModulus,
+                                                  FieldKind::Density,      FieldKind::Displacement,
+                                                  FieldKind::StrainEnergy, FieldKind::Damping};
 std::string_view fieldName(FieldKind field);   ///< "youngs", "density", ... (command line)
 std::string_view fieldLabel(FieldKind field);  ///< "Young's modulus" (UI)
 std::string_view fieldUnit(FieldKind field);   ///< "Pa", "kg/m^3", "m", "J/m^3"

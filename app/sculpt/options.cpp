@@ -13,7 +13,7 @@ const char* const kUsage =
     "  --script FILE          replay a session script (docs/file-formats.md) on the scene\n"
     "  --level K              simulation level (1..3)\n"
     "  --method M             phong | linear | vertex | attribute\n"
-    "  --field F              none | youngs | density | displacement | strain\n"
+    "  --field F              none | youngs | density | displacement | strain | damping\n"
     "  --clip x|y|z           clipping plane through the middle of the solid\n"
     "  --wireframe --flat --show-cells --show-control --no-grid\n"
     "  --preset blender|stylus  mouse navigation preset (default blender)\n"
@@ -88,7 +88,7 @@ Options parseOptions(int argc, char** argv, bool* helpShown) {
       const auto field = parseField(name);
       if (!field)
         throw std::invalid_argument(
-            "--field must be none, youngs, density, displacement or strain (got '" + name + "')");
+            "--field must be none, youngs, density, displacement, strain or damping (got '" + name + "')");
       options.display.field = *field;
     } else if (arg == "--clip") {
       const std::string axis = value();

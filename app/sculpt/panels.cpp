@@ -265,7 +265,7 @@ void displayPanel(AppModel& m) {
   if (ImGui::Combo("Deformation", &method, "Linear\0Vertex\0Phong\0Attribute\0"))
     d.method = static_cast<InterpolationMethod>(method);
   int field = static_cast<int>(d.field);
-  if (ImGui::Combo("Field", &field, "None\0Young's modulus\0Density\0Displacement\0Strain energy\0"))
+  if (ImGui::Combo("Field", &field, "None\0Young's modulus\0Density\0Displacement\0Strain energy\0Damping\0"))
     d.field = static_cast<FieldKind>(field);
   if (d.field != FieldKind::None) {
     ImGui::Checkbox("Automatic range", &d.autoRange);

@@ -38,6 +38,7 @@ SceneFrame restFrame(const SceneGeometry& geometry, const Material& material) {
   const size_t cells = geometry.cellMesh.numCells();
   frame.cellYoungs.assign(cells, static_cast<float>(material.youngs));
   frame.cellDensity.assign(cells, static_cast<float>(material.density));
+  frame.cellDamping.assign(cells, static_cast<float>(material.damping));
   frame.cellStrainEnergy.assign(cells, 0.0f);
   return frame;
 }
@@ -267,14 +268,17 @@ void ScenePhysics::updateMaterialFields() {
   const FemMesh& mesh = model_->mesh();
   elementYoungs_.assign(mesh.numElements(), 0.0);
   elementDensity_.assign(mesh.numElements(), 0.0);
+  elementDamping_.assign(mesh.numElements(), 0.0);
   for (uint32_t e = 0; e < mesh.numElements(); ++e) {
-    double youngs = 0.0, density = 0.0;
+    double youngs = 0.0, density = 0.0, damping = 0.0;
     for (uint32_t q = mesh.gaussBegin(e); q < mesh.gaussBegin(e) + mesh.gaussCount(e); ++q) {
       youngs += mesh.gaussVolume[q] * mesh.gaussMaterial[q].youngs;
       density += mesh.gaussVolume[q] * mesh.gaussMaterial[q].density;
+      damping += mesh.gaussVolume[q] * mesh.gaussMaterial[q].damping;
     }
     elementYoungs_[e] = youngs / elementVolume_[e];
     elementDensity_[e] = density / elementVolume_[e];
+    elementDamping_[e] = damping / elementVolume_[e];
   }
 }
 
@@ -304,6 +308,7 @@ void ScenePhysics::fillFrame(SceneFrame& frame) const {
   frame.control = simulator_->positions();
   toCells(g, elementYoungs_, frame.cellYoungs);
   toCells(g, elementDensity_, frame.cellDensity);
+  toCells(g, elementDamping_, frame.cellDamping);
   toCells(g, elementEnergyDensity_, frame.cellStrainEnergy);
   frame.simulatedTime = simulatedTime();
   frame.stepMs = lastStepMs_;

@@ -33,9 +33,9 @@ struct SceneFrame {
   Points nodes;          ///< #cellMesh nodes by 3
   std::vector<Eigen::Matrix3d> gradients;  ///< per cellMesh node (PhongGpuDeformer::setFrame)
   Points control;        ///< #control points by 3
-  /// Per cellMesh cell, from its FEM element: mean Young's modulus (Pa), mean density (kg/m^3)
-  /// and strain energy density (J/m^3) in this state.
-  std::vector<float> cellYoungs, cellDensity, cellStrainEnergy;
+  /// Per cellMesh cell, from its FEM element: mean Young's modulus (Pa), density (kg/m^3) and
+  /// damping (kg/(m^3 s)), and strain energy density (J/m^3) in this state.
+  std::vector<float> cellYoungs, cellDensity, cellStrainEnergy, cellDamping;
   double simulatedTime = 0.0;  ///< seconds since the last reset
   double stepMs = 0.0;         ///< wall time of the last step with this frame's update
   StepReport lastStep;
@@ -136,7 +136,7 @@ class ScenePhysics {
   Points femNodes_, nodes_;
   std::vector<Eigen::Matrix3d> gradients_;
   std::vector<double> elementVolume_, elementEnergy_, elementEnergyDensity_;
-  std::vector<double> elementYoungs_, elementDensity_;
+  std::vector<double> elementYoungs_, elementDensity_, elementDamping_;
 };
 
 }  // namespace sculpt::app

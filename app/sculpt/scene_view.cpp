@@ -25,6 +25,7 @@ const std::vector<float>* cellField(const SceneFrame& frame, FieldKind field) {
     case FieldKind::YoungsModulus: return &frame.cellYoungs;
     case FieldKind::Density: return &frame.cellDensity;
     case FieldKind::StrainEnergy: return &frame.cellStrainEnergy;
+    case FieldKind::Damping: return &frame.cellDamping;
     default: return nullptr;
   }
 }

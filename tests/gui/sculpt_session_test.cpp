@@ -334,6 +334,16 @@ TEST_F(SculptSession, InflatePinCurveSaveAndOpenOnBlock3) {
   release();
   frames(2);
   ASSERT_TRUE(app_->document().dirty());
+  // Damping paints too, and its field shows it.
+  tools.field = PaintField::Damping;
+  tools.paint.damping = 5.0e4;
+  app_->model().display.field = FieldKind::Damping;
+  drag(ImVec2(middle.x - 60, middle.y), 0.0f, 20.0f, 4);
+  release();
+  frames(2);
+  EXPECT_EQ(app_->document().undoLabel(), "Paint damping");
+  EXPECT_GT(app_->model().fieldRange.high, 2.0e4);
+  EXPECT_LT(app_->model().fieldRange.low, 2.5e3) << "unpainted cells keep the body's 2000";
   const fs::path saved = folder_ / "block3-edit";  // the extension is added
   app_->model().requests.saveAs = saved.string();
   frames(1);
