@@ -77,6 +77,7 @@ struct AppModel {
   Status status;
   FieldRange fieldRange;  ///< the colour map's range this frame
   std::string sceneFile;  ///< the scene shown (empty: the default bunny)
+  bool controlMeshScene = false;  ///< its surface is the control mesh's boundary (no cage)
   std::array<char, 1024> scenePathInput{};
   std::vector<std::string> recentScenes;  ///< most recent first (File > Recent)
   bool showHelp = false, showPanels = true;

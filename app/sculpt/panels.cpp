@@ -217,7 +217,7 @@ void scenePanel(AppModel& m) {
     rebuild |= ImGui::SliderInt("Level K", &s.level, 1, 3, "%d", ImGuiSliderFlags_AlwaysClamp);
     if (ImGui::IsItemHovered())
       ImGui::SetTooltip("Simulation level: elements live on the level-K cells (x8 per level)");
-    if (m.sceneFile.empty() || m.sceneFile.find(".json") == std::string::npos)
+    if (!m.controlMeshScene)
       rebuild |= ImGui::SliderScalar("Cage cells", ImGuiDataType_Double, &s.cageCellsAcross,
                                      &kCageMin, &kCageMax, "%.0f across");
     else

@@ -226,6 +226,7 @@ void SculptApp::syncDocument() {
     pendingLabel_ = "Set material";
   }
   if (const std::string problem = document_.tick(); !problem.empty()) model_.toast(problem, true, 8.0);
+  model_.controlMeshScene = documentSource_.kind == SceneKind::ControlMesh;
   DocumentStatus& d = model_.document;
   d.title = document_.title();
   d.name = documentName(document_.path());

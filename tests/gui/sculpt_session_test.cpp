@@ -378,7 +378,7 @@ TEST_F(SculptSession, InflatePinCurveSaveAndOpenOnBlock3) {
   pointer_.left = true;
   frames(1);
   release();
-  frames(3);
+  frames(3, "sculpt-extrude-mirror.png");
   EXPECT_EQ(app_->document().project().controlMesh.numCells(), mesh.numCells() + 2);
   EXPECT_EQ(app_->document().undoLabel().rfind("Extrude", 0), 0u);
   press(GLFW_KEY_Z, true);
