@@ -240,12 +240,13 @@ PinEvent parsePin(const Reader& r) {
 }
 
 // `field` as a non-empty array of `width`-tuples of indices (width 1: plain indices), each an
-// integer in [0, 2^32); `shape` describes one entry for messages ("[cell, face]").
+// integer in [0, 2^32); `shape` describes one entry for messages ("[cell, face]", "cell index").
 std::vector<std::vector<uint32_t>> indexTuples(const Reader& r, const std::string& field,
                                                size_t width, const std::string& shape) {
-  if (!r.has(field)) r.fail(field, "is missing (a non-empty array of " + shape + ")");
+  const std::string entries = width == 1 ? shape + "es" : shape + " entries";
+  if (!r.has(field)) r.fail(field, "is missing (a non-empty array of " + entries + ")");
   const json& list = r.at(field);
-  if (!list.is_array() || list.empty()) r.fail(field, "must be a non-empty array of " + shape);
+  if (!list.is_array() || list.empty()) r.fail(field, "must be a non-empty array of " + entries);
   std::vector<std::vector<uint32_t>> tuples;
   for (size_t k = 0; k < list.size(); ++k) {
     const json entry = width == 1 ? json::array({list[k]}) : list[k];
@@ -255,7 +256,9 @@ std::vector<std::vector<uint32_t>> indexTuples(const Reader& r, const std::strin
     for (const json& index : entry) {
       if (!index.is_number_integer() || index.get<long long>() < 0 ||
           index.get<long long>() > static_cast<long long>(UINT32_MAX))
-        r.fail(field + "[" + std::to_string(k) + "]", "must be " + shape + " of integers >= 0");
+        r.fail(field + "[" + std::to_string(k) + "]",
+               width == 1 ? "must be a " + shape + ": an integer >= 0"
+                          : "must be " + shape + " with integers >= 0");
       tuple.push_back(static_cast<uint32_t>(index.get<long long>()));
     }
     tuples.push_back(std::move(tuple));

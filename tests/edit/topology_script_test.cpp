@@ -66,15 +66,15 @@ TEST(TopologyScript, MalformedEventsAreOneSentence) {
        "s.json: events[0] (topology): 'op' must be one of delete, extrude, bridge, weld, "
        "subdivide, crease, corner (got \"explode\")."},
       {R"({"t": 0, "type": "topology", "op": "delete"})",
-       "s.json: events[0] (topology): 'cells' is missing (a non-empty array of cell index)."},
+       "s.json: events[0] (topology): 'cells' is missing (a non-empty array of cell indexes)."},
       {R"({"t": 0, "type": "topology", "op": "delete", "cells": []})",
-       "s.json: events[0] (topology): 'cells' must be a non-empty array of cell index."},
+       "s.json: events[0] (topology): 'cells' must be a non-empty array of cell indexes."},
       {R"({"t": 0, "type": "topology", "op": "delete", "cells": [1, -2]})",
-       "s.json: events[0] (topology): 'cells[1]' must be cell index of integers >= 0."},
+       "s.json: events[0] (topology): 'cells[1]' must be a cell index: an integer >= 0."},
       {R"({"t": 0, "type": "topology", "op": "extrude", "faces": [[1, 2, 3]], "distance": 1})",
        "s.json: events[0] (topology): 'faces[0]' must be [cell, face]."},
       {R"({"t": 0, "type": "topology", "op": "extrude", "faces": [[1, 0.5]], "distance": 1})",
-       "s.json: events[0] (topology): 'faces[0]' must be [cell, face] of integers >= 0."},
+       "s.json: events[0] (topology): 'faces[0]' must be [cell, face] with integers >= 0."},
       {R"({"t": 0, "type": "topology", "op": "extrude", "faces": [[1, 2]], "distance": 0})",
        "s.json: events[0] (topology): 'distance' must be a finite number > 0 (m) (got 0)."},
       {R"({"t": 0, "type": "topology", "op": "bridge", "faces": [[1, 2]]})",
@@ -86,7 +86,7 @@ TEST(TopologyScript, MalformedEventsAreOneSentence) {
       {R"({"t": 0, "type": "topology", "op": "crease", "edges": [[1, 2]], "untag": "yes"})",
        "s.json: events[0] (topology): 'untag' must be true or false."},
       {R"({"t": 0, "type": "topology", "op": "corner", "vertices": [[1]]})",
-       "s.json: events[0] (topology): 'vertices[0]' must be vertex index of integers >= 0."},
+       "s.json: events[0] (topology): 'vertices[0]' must be a vertex index: an integer >= 0."},
   };
   for (const auto& [events, expected] : cases) {
     SCOPED_TRACE(events);
