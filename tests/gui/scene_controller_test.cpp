@@ -814,5 +814,44 @@ TEST(SceneControllerScript, MouseGrabPullsWhileHeldAndLetsGo) {
   expectFinite(frame);
 }
 
+TEST(SceneControllerThreaded, BrushEditsAreCapturedAndRestoredOnTheSimulationThread) {
+  // The window's paint and pin dabs, the capture that makes their undo entry, and the restore of
+  // undo run on the simulation thread while it steps (ThreadSanitizer checks this test).
+  SceneController controller(true);
+  controller.load(controlMesh("block3.json"), SceneSettings{});
+  SceneFrame frame;
+  ASSERT_TRUE(waitFor([&] {
+    controller.fetchNewer(frame);
+    return frame.physicsReady;
+  }));
+  controller.requestEdits();
+  std::optional<SceneController::Edits> before;
+  ASSERT_TRUE(waitFor([&] { return (before = controller.takeEdits()).has_value(); }));
+  MaterialBrushSettings brush;
+  brush.radius = 0.8;
+  brush.target.youngs = 5.0e7;
+  brush.fields = {false, false, true, false};
+  brush.mirror.x = false;
+  controller.paint(Eigen::Vector3d(1.5, 1.5, 1.5), brush);
+  controller.pin(Eigen::Vector3d(0.0, 0.0, 0.0), 0.1, true);
+  controller.requestEdits();
+  std::optional<SceneController::Edits> painted;
+  ASSERT_TRUE(waitFor([&] { return (painted = controller.takeEdits()).has_value(); }));
+  ASSERT_EQ(painted->materials.size(), before->materials.size());
+  size_t stiff = 0;
+  for (const Material& m : painted->materials.materials) stiff += m.youngs > 1.0e7;
+  EXPECT_GT(stiff, 0u);
+  EXPECT_LT(stiff, painted->materials.size() / 2);
+  EXPECT_EQ(painted->pins.size(), before->pins.size() + 1) << "the corner at the origin";
+  // Undo: back to the captured state, bit for bit.
+  controller.restoreEdits(before->materials, before->pins);
+  controller.requestEdits();
+  std::optional<SceneController::Edits> restored;
+  ASSERT_TRUE(waitFor([&] { return (restored = controller.takeEdits()).has_value(); }));
+  EXPECT_TRUE(sameMaterialSamples(restored->materials, before->materials));
+  EXPECT_EQ(restored->pins, before->pins);
+  EXPECT_TRUE(controller.buildStatus().error.empty()) << controller.buildStatus().error;
+}
+
 }  // namespace
 }  // namespace sculpt::app
