@@ -13,14 +13,20 @@
 namespace sculpt {
 namespace {
 
-// B-spline values and derivatives at the 4 Gauss points and at the centre.
+// Weights of the parametric gradient at the element centre: dx/dxi_m = sum_n centre[m][n] x_n,
+// node n = a*16 + b*4 + g.
 struct TricubicTables {
-  double B[4][4], D[4][4];  // [gauss point][basis]
-  double Bc[4], Dc[4];
+  double centre[3][64];
   TricubicTables() {
-    const QuadratureRule rule = gaussLegendre(4);
-    for (int i = 0; i < 4; ++i) cubicBSplineBasis(rule.points[i], B[i], D[i]);
+    double Bc[4], Dc[4];
     cubicBSplineBasis(0.5, Bc, Dc);
+    for (int a = 0; a < 4; ++a)
+      for (int b = 0; b < 4; ++b)
+        for (int g = 0; g < 4; ++g) {
+          centre[0][a * 16 + b * 4 + g] = Dc[a] * Bc[b] * Bc[g];
+          centre[1][a * 16 + b * 4 + g] = Bc[a] * Dc[b] * Bc[g];
+          centre[2][a * 16 + b * 4 + g] = Bc[a] * Bc[b] * Dc[g];
+        }
   }
 };
 const TricubicTables& tables() {
@@ -32,16 +38,30 @@ const TricubicTables& tables() {
 
 ElasticKernel::ElasticKernel(const FemMesh& mesh)
     : mesh_(mesh), rotations_(mesh.numElements(), Eigen::Matrix3d::Identity()) {
-  // Inverse Jacobians in the kernel's layout [i*4 + j][row*3 + col][k].
+  // Inverse Jacobians in the kernel's layout [i*4 + j][row*3 + col][k]. An element whose rest
+  // map is affine (the same inverse Jacobian at all 64 Gauss points, to rounding: the regular
+  // interior of a lattice) stores a single [row*3 + col][k] block, read with stride 0: a
+  // sixteenth of the data, which matters once the model outgrows the caches.
   const uint32_t numTricubic = mesh.numTricubic();
-  tricubicInverseJacobian_.resize(size_t(numTricubic) * 576);
-  for (uint32_t e = 0; e < numTricubic; ++e)
-    for (int ij = 0; ij < 16; ++ij)
-      for (int k = 0; k < 4; ++k) {
-        const Eigen::Matrix3d& J = mesh.tricubicInverseJacobian[size_t(e) * 64 + ij * 4 + k];
+  tricubicJacobianOffset_.resize(numTricubic);
+  tricubicJacobianStride_.resize(numTricubic);
+  tricubicInverseJacobian_.clear();
+  for (uint32_t e = 0; e < numTricubic; ++e) {
+    const Eigen::Matrix3d* J = mesh.tricubicInverseJacobian.data() + size_t(e) * 64;
+    const double scale = J[0].cwiseAbs().maxCoeff();
+    bool affine = true;
+    for (int q = 1; q < 64 && affine; ++q)
+      affine = (J[q] - J[0]).cwiseAbs().maxCoeff() <= 1e-13 * scale;
+    tricubicJacobianOffset_[e] = tricubicInverseJacobian_.size();
+    tricubicJacobianStride_[e] = affine ? 0 : 36;
+    const int blocks = affine ? 1 : 16;
+    tricubicInverseJacobian_.resize(tricubicInverseJacobian_.size() + size_t(blocks) * 36);
+    double* out = tricubicInverseJacobian_.data() + tricubicJacobianOffset_[e];
+    for (int ij = 0; ij < blocks; ++ij)
+      for (int k = 0; k < 4; ++k)
         for (int rc = 0; rc < 9; ++rc)
-          tricubicInverseJacobian_[size_t(e) * 576 + ij * 36 + rc * 4 + k] = J(rc / 3, rc % 3);
-      }
+          out[ij * 36 + rc * 4 + k] = J[affine ? 0 : ij * 4 + k](rc / 3, rc % 3);
+  }
   linearShapeGradient_.resize(size_t(mesh.numLinear()) * 192);
   for (uint32_t l = 0; l < mesh.numLinear(); ++l)
     for (int q = 0; q < 8; ++q) {
@@ -74,34 +94,62 @@ void ElasticKernel::resetRotations() {
   rotations_.assign(mesh_.numElements(), Eigen::Matrix3d::Identity());
 }
 
-void ElasticKernel::updateRotations(const Points& nodes) {
-  const TricubicTables& T = tables();
+uint32_t ElasticKernel::gatherElement(uint32_t e, const Points& x, double* ue) const {
   const uint32_t numTricubic = mesh_.numTricubic();
-  parallelChunks(mesh_.numElements(), 256, [&](uint32_t begin, uint32_t end, unsigned) {
-    for (uint32_t e = begin; e < end; ++e) {
-      Eigen::Matrix3d F = Eigen::Matrix3d::Zero();
-      if (e < numTricubic) {
-        const auto& ids = mesh_.tricubicNodes[e];
-        Eigen::Matrix3d G = Eigen::Matrix3d::Zero();
-        for (int a = 0; a < 4; ++a)
-          for (int b = 0; b < 4; ++b)
-            for (int g = 0; g < 4; ++g) {
-              const Eigen::Vector3d x = nodes.row(ids[a * 16 + b * 4 + g]).transpose();
-              G.col(0) += T.Dc[a] * T.Bc[b] * T.Bc[g] * x;
-              G.col(1) += T.Bc[a] * T.Dc[b] * T.Bc[g] * x;
-              G.col(2) += T.Bc[a] * T.Bc[b] * T.Dc[g] * x;
-            }
-        F = G * mesh_.tricubicCentreInverseJacobian[e];
-      } else {
-        const uint32_t l = e - numTricubic;
-        const auto& ids = mesh_.linearNodes[l];
-        const LinearShapeGradient& dN = mesh_.linearCentreShapeGradient[l];
-        for (int a = 0; a < kLinearNodes; ++a)
-          F += nodes.row(ids[a]).transpose() * dN.row(a);
+  const bool tricubic = e < numTricubic;
+  const uint32_t* ids =
+      tricubic ? mesh_.tricubicNodes[e].data() : mesh_.linearNodes[e - numTricubic].data();
+  const int count = tricubic ? kTricubicNodes : kLinearNodes;
+  // Coordinate-major element vectors (the kernels' layout): ue[c*count + n].
+  for (int n = 0; n < count; ++n)
+    for (int c = 0; c < 3; ++c) ue[c * count + n] = x(ids[n], c);
+  return uint32_t(count);
+}
+
+Eigen::Matrix3d ElasticKernel::elementRotation(uint32_t e, const double* ue) const {
+  // F = I + (du/dX) at the element centre, from the gathered displacements (the rest geometry
+  // maps to I); polar rotation warm-started from the element's last rotation, which changes
+  // little between calls.
+  Eigen::Matrix3d F;
+  const uint32_t numTricubic = mesh_.numTricubic();
+  if (e < numTricubic) {
+    const TricubicTables& T = tables();
+    using V4 = Eigen::Array4d;
+    Eigen::Matrix3d G;  // G(c, m) = d u_c / d xi_m
+    for (int c = 0; c < 3; ++c)
+      for (int m = 0; m < 3; ++m) {
+        V4 sum = V4::Zero();
+        for (int n = 0; n < kTricubicNodes; n += 4)
+          sum += Eigen::Map<const V4>(T.centre[m] + n) * Eigen::Map<const V4>(ue + c * 64 + n);
+        G(c, m) = sum.sum();
       }
-      rotations_[e] = polarRotation(F);
+    F = G * mesh_.tricubicCentreInverseJacobian[e];
+  } else {
+    const LinearShapeGradient& dN = mesh_.linearCentreShapeGradient[e - numTricubic];
+    for (int c = 0; c < 3; ++c)
+      for (int m = 0; m < 3; ++m) {
+        double sum = 0;
+        for (int a = 0; a < kLinearNodes; ++a) sum += ue[c * kLinearNodes + a] * dN(a, m);
+        F(c, m) = sum;
+      }
+  }
+  F += Eigen::Matrix3d::Identity();
+  return polarRotation(F, rotations_[e]);
+}
+
+void ElasticKernel::updateRotations(const Points& nodes) {
+  displacement_ = nodes - mesh_.restNodes;
+  parallelChunks(mesh_.numElements(), 256, [&](uint32_t begin, uint32_t end, unsigned) {
+    alignas(64) double ue[kTricubicNodes * 3];
+    for (uint32_t e = begin; e < end; ++e) {
+      gatherElement(e, displacement_, ue);
+      rotations_[e] = elementRotation(e, ue);
     }
   });
+}
+
+void ElasticKernel::updateRotationsAndAddGradient(const Points& nodes, Points& gradient) {
+  run(nodes, Mode::Gradient, &gradient, false, nullptr, rotations_.data());
 }
 
 double ElasticKernel::energy(const Points& nodes) const {
@@ -122,9 +170,8 @@ void ElasticKernel::addHessianProduct(const Points& dx, Points& result) const {
 }
 
 double ElasticKernel::run(const Points& x, Mode mode, Points* out, bool withEnergy,
-                          double* perElement) const {
+                          double* perElement, Eigen::Matrix3d* newRotations) const {
   const bool withRestTerm = mode == Mode::Gradient;  // x holds positions, not a direction
-  const Points& rest = mesh_.restNodes;
   const uint32_t numTricubic = mesh_.numTricubic();
   const uint32_t numElements = mesh_.numElements();
   const unsigned workers = std::min<unsigned>(workerCount(), std::max(1u, numElements / 32));
@@ -133,13 +180,19 @@ double ElasticKernel::run(const Points& x, Mode mode, Points* out, bool withEner
     for (Points& buffer : workerBuffers_) buffer.setZero(mesh_.numNodes(), 3);
   }
   std::vector<double> workerEnergy(workers, 0.0);
-  // Equal work per worker: a tricubic element costs about three linear ones.
-  const double totalCost = 3.0 * numTricubic + (numElements - numTricubic);
+  // The kernels take displacements in gradient mode (x holds positions there).
+  if (withRestTerm) displacement_ = x - mesh_.restNodes;
+  const Points& source = withRestTerm ? displacement_ : x;
+  // Equal work per worker: a tricubic element costs about kTricubicCost linear ones.
+  constexpr double kTricubicCost = 5.0;
+  const double tricubicCost = kTricubicCost * numTricubic;
+  const double totalCost = tricubicCost + (numElements - numTricubic);
   auto chunkStart = [&](unsigned k) {
     const double target = totalCost * k / workers;
-    return target <= 3.0 * numTricubic
-               ? static_cast<uint32_t>(target / 3.0)
-               : std::min(numElements, static_cast<uint32_t>(numTricubic + (target - 3.0 * numTricubic)));
+    return target <= tricubicCost
+               ? static_cast<uint32_t>(target / kTricubicCost)
+               : std::min(numElements,
+                          static_cast<uint32_t>(numTricubic + (target - tricubicCost)));
   };
 
   parallelChunks(workers, 1, [&](uint32_t firstWorker, uint32_t lastWorker, unsigned) {
@@ -150,19 +203,32 @@ double ElasticKernel::run(const Points& x, Mode mode, Points* out, bool withEner
       alignas(64) double ge[64 * 3];
       const uint32_t end = worker + 1 == workers ? numElements : chunkStart(worker + 1);
       for (uint32_t e = chunkStart(worker); e < end; ++e) {
-        const Eigen::Matrix3d& R = rotations_[e];
         const bool tricubic = e < numTricubic;
-        const uint32_t* ids = tricubic ? mesh_.tricubicNodes[e].data()
-                                       : mesh_.linearNodes[e - numTricubic].data();
-        const int count = tricubic ? kTricubicNodes : kLinearNodes;
-        for (int n = 0; n < count; ++n)
-          for (int c = 0; c < 3; ++c)
-            ue[n * 3 + c] = withRestTerm ? x(ids[n], c) - rest(ids[n], c) : x(ids[n], c);
+        const uint32_t count = gatherElement(e, source, ue);
+        if (newRotations) newRotations[e] = elementRotation(e, ue);
+        const Eigen::Matrix3d& R = rotations_[e];
         if (sink) std::fill(ge, ge + count * 3, 0.0);
         double* gradient = sink ? ge : nullptr;
         double elementEnergy;
         if (tricubic) {
-          const TricubicPacked packed{tricubicInverseJacobian_.data() + size_t(e) * 576,
+          // The packed rest data (5.6 KB per element) streams from memory once the model
+          // outgrows the caches (K = 3): fetch the next element's while this one computes.
+          if (e + 1 < numTricubic) {
+            const char* next = reinterpret_cast<const char*>(tricubicInverseJacobian_.data() +
+                                                             tricubicJacobianOffset_[e + 1]);
+            const int bytes = (tricubicJacobianStride_[e + 1] == 0 ? 36 : 576) * 8;
+            for (int line = 0; line < bytes; line += 64) __builtin_prefetch(next + line);
+            const char* lambda =
+                reinterpret_cast<const char*>(tricubicVolumeLambda_.data() + size_t(e + 1) * 64);
+            const char* mu =
+                reinterpret_cast<const char*>(tricubicVolumeMu_.data() + size_t(e + 1) * 64);
+            for (int line = 0; line < 64 * 8; line += 64) {
+              __builtin_prefetch(lambda + line);
+              __builtin_prefetch(mu + line);
+            }
+          }
+          const TricubicPacked packed{tricubicInverseJacobian_.data() + tricubicJacobianOffset_[e],
+                                      tricubicJacobianStride_[e],
                                       tricubicVolumeLambda_.data() + size_t(e) * 64,
                                       tricubicVolumeMu_.data() + size_t(e) * 64};
           elementEnergy = tricubicElementKernel(ue, packed, R, withRestTerm, withEnergy, gradient);
@@ -176,8 +242,10 @@ double ElasticKernel::run(const Points& x, Mode mode, Points* out, bool withEner
         energy += elementEnergy;
         if (perElement) perElement[e] = elementEnergy;
         if (!sink) continue;
-        for (int n = 0; n < count; ++n)
-          for (int c = 0; c < 3; ++c) (*sink)(ids[n], c) += ge[n * 3 + c];
+        const uint32_t* ids = tricubic ? mesh_.tricubicNodes[e].data()
+                                       : mesh_.linearNodes[e - numTricubic].data();
+        for (uint32_t n = 0; n < count; ++n)
+          for (int c = 0; c < 3; ++c) (*sink)(ids[n], c) += ge[c * count + n];
       }
       workerEnergy[worker] = energy;
     }

@@ -23,6 +23,8 @@ class ElasticKernel {
 
   /// R_e from the current node positions (#nodes by 3).
   void updateRotations(const Points& nodes);
+  /// updateRotations(nodes), then addGradient(nodes, gradient), in one pass over the elements.
+  void updateRotationsAndAddGradient(const Points& nodes, Points& gradient);
   /// R_e = I for every element: plain small-strain linear elasticity.
   void resetRotations();
   const std::vector<Eigen::Matrix3d>& rotations() const { return rotations_; }
@@ -45,14 +47,24 @@ class ElasticKernel {
   enum class Mode { Gradient, HessianProduct };
   // Runs the element kernels; accumulates into `out` when non-null and returns the energy when
   // `withEnergy` (gradient mode only), storing each element's term in `perElement` if non-null.
+  // With `newRotations` (gradient mode; rotations_.data()) each element's rotation is first
+  // set from x there.
   double run(const Points& x, Mode mode, Points* out, bool withEnergy,
-             double* perElement = nullptr) const;
+             double* perElement = nullptr, Eigen::Matrix3d* newRotations = nullptr) const;
+  // Gathers element e's node values of x into ue in the kernels' coordinate-major layout;
+  // returns the node count.
+  uint32_t gatherElement(uint32_t e, const Points& x, double* ue) const;
+  // The rotation of element e from its gathered displacements (warm-started from rotations_[e]).
+  Eigen::Matrix3d elementRotation(uint32_t e, const double* ue) const;
 
   const FemMesh& mesh_;
   std::vector<Eigen::Matrix3d> rotations_;
   mutable std::vector<Points> workerBuffers_;
+  mutable Points displacement_;  // x - rest of the current pass
   // Tricubic rest data packed for tricubicElementKernel.
   std::vector<double> tricubicInverseJacobian_, tricubicVolumeLambda_, tricubicVolumeMu_;
+  std::vector<size_t> tricubicJacobianOffset_;  // element's start in tricubicInverseJacobian_
+  std::vector<int> tricubicJacobianStride_;     // 36, or 0 for an affine element (one block)
   std::vector<double> linearShapeGradient_, linearVolumeLambda_, linearVolumeMu_;  // [l][a*3+c][q]
 };
 

@@ -9,7 +9,7 @@ double linearElementKernel(const double* u, const LinearPacked& element, const E
   double ul[8][3];
   for (int a = 0; a < 8; ++a)
     for (int r = 0; r < 3; ++r)
-      ul[a][r] = R(0, r) * u[a * 3 + 0] + R(1, r) * u[a * 3 + 1] + R(2, r) * u[a * 3 + 2];
+      ul[a][r] = R(0, r) * u[a] + R(1, r) * u[8 + a] + R(2, r) * u[16 + a];
   V8 dN[8][3];
   for (int a = 0; a < 8; ++a)
     for (int c = 0; c < 3; ++c) dN[a][c] = Eigen::Map<const V8>(element.shapeGradient + (a * 3 + c) * 8);
@@ -49,7 +49,7 @@ double linearElementKernel(const double* u, const LinearPacked& element, const E
     for (int r = 0; r < 3; ++r)
       gl[r] = (S[r][0] * dN[a][0] + S[r][1] * dN[a][1] + S[r][2] * dN[a][2]).sum();
     for (int c = 0; c < 3; ++c)
-      gradient[a * 3 + c] += R(c, 0) * gl[0] + R(c, 1) * gl[1] + R(c, 2) * gl[2];
+      gradient[c * 8 + a] += R(c, 0) * gl[0] + R(c, 1) * gl[1] + R(c, 2) * gl[2];
   }
   return energy;
 }

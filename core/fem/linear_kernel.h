@@ -13,7 +13,8 @@ struct LinearPacked {
   const double* volumeMu;       ///< [q]
 };
 
-/// u: 8 node values, node a at u[a*3 + c]. Same contract as tricubicElementKernel.
+/// u: 8 node values, coordinate-major: coordinate c of node a at u[c*8 + a]. Same contract as
+/// tricubicElementKernel.
 double linearElementKernel(const double* u, const LinearPacked& element, const Eigen::Matrix3d& R,
                            bool withRestTerm, bool withEnergy, double* gradient);
 

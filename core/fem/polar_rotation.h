@@ -10,4 +10,11 @@ namespace sculpt {
 /// inverted element is pushed back instead of being mirrored.
 Eigen::Matrix3d polarRotation(const Eigen::Matrix3d& F);
 
+/// The same rotation, found from a nearby rotation `guess` (last step's R of the element):
+/// Newton's method on the rotation vector, usually one or two 3x3 solves instead of the five or
+/// six inverses of the cold iteration. Falls back to polarRotation(F) when the guess is far, F is
+/// inverted or nearly degenerate, or the iteration does not settle; the result agrees with
+/// polarRotation(F) to about 1e-14.
+Eigen::Matrix3d polarRotation(const Eigen::Matrix3d& F, const Eigen::Matrix3d& guess);
+
 }  // namespace sculpt

@@ -11,13 +11,15 @@ namespace sculpt {
 /// Rest data of one tricubic element, packed for the kernel.
 struct TricubicPacked {
   const double* inverseJacobian;  ///< [i*4 + j][row*3 + col][k]: (dX/dxi)^-1, 16*9*4 values
+  int jacobianStride;             ///< 36; 0 when all i*4 + j share the first block (affine)
   const double* volumeLambda;     ///< [i*16 + j*4 + k]: Gauss volume times lambda
   const double* volumeMu;         ///< [i*16 + j*4 + k]: Gauss volume times mu
 };
 
-/// u: 64 node values (displacements or a direction), node a*16+b*4+g at u[(a*16+b*4+g)*3 + c].
-/// Adds the node gradient to `gradient` (same layout) when non-null and returns the energy
-/// contribution when `withEnergy`. `withRestTerm` adds sym(R) - I to the strain (gradient mode).
+/// u: 64 node values (displacements or a direction), coordinate-major: coordinate c of node
+/// a*16+b*4+g at u[c*64 + a*16+b*4+g]. Adds the node gradient to `gradient` (same layout) when
+/// non-null and returns the energy contribution when `withEnergy`. `withRestTerm` adds
+/// sym(R) - I to the strain (gradient mode).
 double tricubicElementKernel(const double* u, const TricubicPacked& element,
                              const Eigen::Matrix3d& R, bool withRestTerm, bool withEnergy,
                              double* gradient);

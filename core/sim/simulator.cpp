@@ -121,6 +121,7 @@ void Simulator::refreshFreeDofs() {
   for (size_t i = 0; i < fixed_.size(); ++i)
     if (!fixed_[i])
       for (int c = 0; c < 3; ++c) freeDofs_.push_back(int(3 * i) + c);
+  ++freeDofsVersion_;
   lastIncrement_.resize(0, 3);
 }
 
@@ -138,18 +139,25 @@ void Simulator::zeroFixed(Points& x) const {
     if (fixed_[i]) x.row(Eigen::Index(i)).setZero();
 }
 
-Points Simulator::prepareAndGradient(const Points& x, bool withInertia) {
+void Simulator::refreshNodes(const Points& x) {
+  // A step evaluates the same control state several times (load energies before and after,
+  // the forces, the energy check, the next step's start): A x is computed once per state.
+  if (scratchControl_.rows() == x.rows() && scratchControl_ == x) return;
   model_.nodesFromControl(x, scratchNodes_);
+  scratchControl_ = x;
+}
+
+Points Simulator::prepareAndGradient(const Points& x, bool withInertia) {
+  refreshNodes(x);
   const FormState state{x, scratchNodes_};
-  elastic_->prepare(state);
+  FormGradient g;
+  g.setZero(x.rows(), scratchNodes_.rows());
+  elastic_->prepareAndAddGradient(state, g);
   for (auto& load : loads_) load->prepare(state);
   if (withInertia) {
     inertia_->prepare(state);
     damping_->prepare(state);
   }
-  FormGradient g;
-  g.setZero(x.rows(), scratchNodes_.rows());
-  elastic_->addGradient(state, g);
   for (auto& load : loads_) load->addGradient(state, g);
   if (withInertia) {
     inertia_->addGradient(state, g);
@@ -197,7 +205,7 @@ CgResult Simulator::newtonStep(const Points& gradient, bool withInertia, double 
 }
 
 double Simulator::systemLoadEnergy(const Points& x) {
-  model_.nodesFromControl(x, scratchNodes_);
+  refreshNodes(x);
   const FormState state{x, scratchNodes_};
   double e = 0;
   for (auto& load : loads_) e += load->energy(state);
@@ -210,14 +218,14 @@ double Simulator::kineticEnergy() const {
 }
 
 double Simulator::elasticEnergy() {
-  model_.nodesFromControl(position_, scratchNodes_);
+  refreshNodes(position_);
   const FormState state{position_, scratchNodes_};
   elastic_->prepare(state);
   return elastic_->energy(state);
 }
 
 double Simulator::loadEnergy() {
-  model_.nodesFromControl(position_, scratchNodes_);
+  refreshNodes(position_);
   const FormState state{position_, scratchNodes_};
   for (auto& load : loads_) load->prepare(state);
   return systemLoadEnergy(position_);
@@ -244,7 +252,7 @@ Simulator::Attempt Simulator::checkState(const Points& start, double loadEnergyB
   double energy = kineticEnergy();
   const double moved = (position_ - start).cwiseAbs().maxCoeff();
   if (std::isfinite(energy) && energy <= limit && moved > 1e-3 * extent_) {
-    model_.nodesFromControl(position_, scratchNodes_);
+    refreshNodes(position_);
     const FormState state{position_, scratchNodes_};
     elastic_->prepare(state);
     energy += elastic_->energy(state);
@@ -313,27 +321,33 @@ Simulator::Attempt Simulator::paperSubstep(double h) {
   Points rhs = -2.0 * h * h * g - 2.0 * h * applyScalarMatrix(D, position_ - previous_);
   zeroFixed(rhs);
   const Eigen::VectorXd b = gather(rhs, freeDofs_);
-  // 2M~ + h D~ changes only with the step and the materials.
+  // 2M~ + h D~ changes only with the step and the materials; it is kept on the free
+  // coordinates (each control point's block is the scalar entry times I3), so that a CG
+  // iteration is one sparse product.
   if (paperMatrixStep_ != h || paperMatrixVersion_ != model_.massVersion() ||
-      paperMatrix_.rows() == 0) {
-    paperMatrix_ = 2.0 * M + h * D;
+      paperMatrixFreeVersion_ != freeDofsVersion_ || paperMatrix_.rows() == 0) {
+    const SparseMatrix lhs = 2.0 * M + h * D;
+    std::vector<int> freeIndex(size_t(3 * lhs.rows()), -1);
+    for (size_t k = 0; k < freeDofs_.size(); ++k) freeIndex[size_t(freeDofs_[k])] = int(k);
+    std::vector<Eigen::Triplet<double>> entries;
+    for (int j = 0; j < lhs.outerSize(); ++j)
+      for (SparseMatrix::InnerIterator it(lhs, j); it; ++it)
+        for (int c = 0; c < 3; ++c) {
+          const int row = freeIndex[size_t(3 * it.row() + c)], col = freeIndex[size_t(3 * j + c)];
+          if (row >= 0 && col >= 0) entries.emplace_back(row, col, it.value());
+        }
+    paperMatrix_.resize(Eigen::Index(freeDofs_.size()), Eigen::Index(freeDofs_.size()));
+    paperMatrix_.setFromTriplets(entries.begin(), entries.end());
     paperDiagonal_ = paperMatrix_.diagonal();
     paperMatrixStep_ = h;
     paperMatrixVersion_ = model_.massVersion();
+    paperMatrixFreeVersion_ = freeDofsVersion_;
   }
-  const SparseMatrix& lhs = paperMatrix_;
-  const Eigen::VectorXd& diagonal = paperDiagonal_;
-  Points direction = Points::Zero(position_.rows(), 3);
   const LinearOperator op = [&](const Eigen::VectorXd& in, Eigen::VectorXd& out) {
-    direction.setZero();
-    scatter(in, freeDofs_, direction);
-    Points product = applyScalarMatrix(lhs, direction);
-    out = gather(product, freeDofs_);
+    out.noalias() = paperMatrix_ * in;
   };
   const LinearOperator jacobi = [&](const Eigen::VectorXd& r, Eigen::VectorXd& z) {
-    z.resize(r.size());
-    for (size_t k = 0; k < freeDofs_.size(); ++k)
-      z[Eigen::Index(k)] = r[Eigen::Index(k)] / diagonal[freeDofs_[k] / 3];
+    z = r.cwiseQuotient(paperDiagonal_);
   };
   Eigen::VectorXd x = lastIncrement_.rows() == position_.rows()
                           ? gather(lastIncrement_, freeDofs_)
@@ -421,7 +435,7 @@ StaticReport Simulator::solveStatic(double tolerance, int maxNewtonIterations) {
   // Scale of the loads: the external gradient at the start.
   double scale = 0;
   {
-    model_.nodesFromControl(position_, scratchNodes_);
+    refreshNodes(position_);
     const FormState state{position_, scratchNodes_};
     for (auto& load : loads_) load->prepare(state);
     FormGradient g;

@@ -122,6 +122,8 @@ class Simulator {
   Points hessianProduct(const Points& dx, bool withInertia);
   void zeroFixed(Points& x) const;
   double systemLoadEnergy(const Points& x);
+  // scratchNodes_ = A x (reused while x equals scratchControl_).
+  void refreshNodes(const Points& x);
   void refreshFreeDofs();
 
   FemModel& model_;
@@ -142,10 +144,14 @@ class Simulator {
   double energyFloor_ = 0;
   double extent_ = 1;  // diagonal of the rest bounding box
   Points scratchNodes_, scratchNodeDirection_;
-  SparseMatrix paperMatrix_;  // 2M~ + h D~ of the paper's scheme, for paperMatrixStep_
+  Points scratchControl_;  // the control state scratchNodes_ belongs to (no rows: none)
+  uint64_t freeDofsVersion_ = 0;  // counts changes of freeDofs_
+  // 2M~ + h D~ of the paper's scheme on the free coordinates (in freeDofs_ order), for
+  // paperMatrixStep_, the mass matrix version and the free set it was built for.
+  SparseMatrix paperMatrix_;
   Eigen::VectorXd paperDiagonal_;
   double paperMatrixStep_ = 0;
-  uint64_t paperMatrixVersion_ = ~uint64_t(0);
+  uint64_t paperMatrixVersion_ = ~uint64_t(0), paperMatrixFreeVersion_ = ~uint64_t(0);
 };
 
 }  // namespace sculpt

@@ -13,6 +13,15 @@ void ElasticForm::prepare(const FormState& x) {
   else model_.elastic().resetRotations();
 }
 
+void ElasticForm::prepareAndAddGradient(const FormState& x, FormGradient& g) {
+  if (!corotated_) {
+    prepare(x);
+    addGradient(x, g);
+    return;
+  }
+  model_.elastic().updateRotationsAndAddGradient(x.nodes, g.nodes);
+}
+
 double ElasticForm::energy(const FormState& x) const { return model_.elastic().energy(x.nodes); }
 
 void ElasticForm::addGradient(const FormState& x, FormGradient& g) const {

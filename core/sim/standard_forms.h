@@ -13,6 +13,8 @@ class ElasticForm : public Form {
   ElasticForm(FemModel& model, bool corotated) : model_(model), corotated_(corotated) {}
   std::string name() const override { return "elastic"; }
   void prepare(const FormState& x) override;
+  /// prepare(x) followed by addGradient(x, g), in one pass over the elements.
+  void prepareAndAddGradient(const FormState& x, FormGradient& g);
   double energy(const FormState& x) const override;
   void addGradient(const FormState& x, FormGradient& g) const override;
   void addHessianProduct(const FormState& x, const FormState& dx, FormGradient& r) const override;
