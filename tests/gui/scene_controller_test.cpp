@@ -601,6 +601,14 @@ bool waitFor(F done, double seconds = 300.0) {
   return true;
 }
 
+/// Polls the published frames into `frame` until the physics of the scene runs.
+bool waitForPhysics(SceneController& controller, SceneFrame& frame) {
+  return waitFor([&] {
+    controller.fetchNewer(frame);
+    return frame.physicsReady;
+  });
+}
+
 TEST(SceneControllerThreaded, ShowsTheRestShapeFirstThenSimulates) {
   SceneController controller(true);
   const auto start = std::chrono::steady_clock::now();
@@ -614,10 +622,7 @@ TEST(SceneControllerThreaded, ShowsTheRestShapeFirstThenSimulates) {
   EXPECT_EQ(frame.sceneId, g->sceneId);
   std::printf("[ measured ] threaded: geometry after %.0f ms (frame %s)\n", firstMs,
               frame.physicsReady ? "simulated" : "at rest");
-  ASSERT_TRUE(waitFor([&] {
-    controller.fetchNewer(frame);
-    return frame.physicsReady;
-  }));
+  ASSERT_TRUE(waitForPhysics(controller, frame));
   const double readyMs =
       std::chrono::duration<double, std::milli>(std::chrono::steady_clock::now() - start).count();
   std::printf("[ measured ] threaded: simulating after %.0f ms\n", readyMs);
@@ -644,10 +649,7 @@ TEST(SceneControllerThreaded, CancelDuringALevelChangeKeepsTheSceneRunning) {
   SceneController controller(true);
   controller.load(controlMesh("block3.json"), SceneSettings{});
   SceneFrame frame;
-  ASSERT_TRUE(waitFor([&] {
-    controller.fetchNewer(frame);
-    return frame.physicsReady;
-  }));
+  ASSERT_TRUE(waitForPhysics(controller, frame));
   const std::shared_ptr<const SceneGeometry> g = controller.takeNewGeometry();
   ASSERT_NE(g, nullptr);
   SceneSettings settings;
@@ -737,10 +739,7 @@ TEST(SceneControllerThreaded, DestructionWhileBuildingOrSteppingIsClean) {
     SceneController controller(true);  // destroyed while stepping, with a rebuild queued
     controller.load(controlMesh("block3.json"), SceneSettings{});
     SceneFrame frame;
-    ASSERT_TRUE(waitFor([&] {
-      controller.fetchNewer(frame);
-      return frame.physicsReady;
-    }));
+    ASSERT_TRUE(waitForPhysics(controller, frame));
     SceneSettings settings;
     settings.level = 2;
     controller.applySettings(settings);
@@ -820,13 +819,14 @@ TEST(SceneControllerThreaded, BrushEditsAreCapturedAndRestoredOnTheSimulationThr
   SceneController controller(true);
   controller.load(controlMesh("block3.json"), SceneSettings{});
   SceneFrame frame;
-  ASSERT_TRUE(waitFor([&] {
-    controller.fetchNewer(frame);
-    return frame.physicsReady;
-  }));
-  controller.requestEdits();
-  std::optional<SceneController::Edits> before;
-  ASSERT_TRUE(waitFor([&] { return (before = controller.takeEdits()).has_value(); }));
+  ASSERT_TRUE(waitForPhysics(controller, frame));
+  const auto capture = [&controller] {
+    controller.requestEdits();
+    std::optional<SceneController::Edits> edits;
+    EXPECT_TRUE(waitFor([&] { return (edits = controller.takeEdits()).has_value(); }));
+    return edits.value_or(SceneController::Edits{});
+  };
+  const SceneController::Edits before = capture();
   MaterialBrushSettings brush;
   brush.radius = 0.8;
   brush.target.youngs = 5.0e7;
@@ -834,22 +834,19 @@ TEST(SceneControllerThreaded, BrushEditsAreCapturedAndRestoredOnTheSimulationThr
   brush.mirror.x = false;
   controller.paint(Eigen::Vector3d(1.5, 1.5, 1.5), brush);
   controller.pin(Eigen::Vector3d(0.0, 0.0, 0.0), 0.1, true);
-  controller.requestEdits();
-  std::optional<SceneController::Edits> painted;
-  ASSERT_TRUE(waitFor([&] { return (painted = controller.takeEdits()).has_value(); }));
-  ASSERT_EQ(painted->materials.size(), before->materials.size());
+  const SceneController::Edits painted = capture();
+  ASSERT_GT(before.materials.size(), 0u);
+  ASSERT_EQ(painted.materials.size(), before.materials.size());
   size_t stiff = 0;
-  for (const Material& m : painted->materials.materials) stiff += m.youngs > 1.0e7;
+  for (const Material& m : painted.materials.materials) stiff += m.youngs > 1.0e7;
   EXPECT_GT(stiff, 0u);
-  EXPECT_LT(stiff, painted->materials.size() / 2);
-  EXPECT_EQ(painted->pins.size(), before->pins.size() + 1) << "the corner at the origin";
+  EXPECT_LT(stiff, painted.materials.size() / 2);
+  EXPECT_EQ(painted.pins.size(), before.pins.size() + 1) << "the corner at the origin";
   // Undo: back to the captured state, bit for bit.
-  controller.restoreEdits(before->materials, before->pins);
-  controller.requestEdits();
-  std::optional<SceneController::Edits> restored;
-  ASSERT_TRUE(waitFor([&] { return (restored = controller.takeEdits()).has_value(); }));
-  EXPECT_TRUE(sameMaterialSamples(restored->materials, before->materials));
-  EXPECT_EQ(restored->pins, before->pins);
+  controller.restoreEdits(before.materials, before.pins);
+  const SceneController::Edits restored = capture();
+  EXPECT_TRUE(sameMaterialSamples(restored.materials, before.materials));
+  EXPECT_EQ(restored.pins, before.pins);
   EXPECT_TRUE(controller.buildStatus().error.empty()) << controller.buildStatus().error;
 }
 
