@@ -5,6 +5,8 @@
 
 #include <gtest/gtest.h>
 
+#include "support/scratch_directory.h"
+
 #include <filesystem>
 #include <fstream>
 
@@ -18,12 +20,6 @@ namespace fs = std::filesystem;
 
 class DocumentTest : public ::testing::Test {
  protected:
-  void SetUp() override {
-    folder_ = fs::temp_directory_path() / ("sculpt_document_" + std::to_string(::getpid()));
-    fs::remove_all(folder_);
-    fs::create_directories(folder_);
-  }
-  void TearDown() override { fs::remove_all(folder_); }
   Document make() {
     return Document(folder_, 60.0, [this] { return now_; });
   }
@@ -33,7 +29,8 @@ class DocumentTest : public ::testing::Test {
     p.pins = {0, 1};
     return p;
   }
-  fs::path folder_;
+  test::ScratchDirectory scratch_{"sculpt_document"};
+  const fs::path& folder_ = scratch_.path();
   double now_ = 0.0;
 };
 

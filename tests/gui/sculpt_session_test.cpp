@@ -25,6 +25,7 @@
 #include "project/project_file.h"
 #include "sculpt/sculpt_app.h"
 #include "support/gl_context.h"
+#include "support/scratch_directory.h"
 
 namespace sculpt::app {
 namespace {
@@ -65,8 +66,6 @@ class SculptSession : public ::testing::Test {
     ASSERT_TRUE(glfwInit());
     window_ = sculpt::testing::hiddenGlWindow(1280, 800);
     ASSERT_NE(window_, nullptr);
-    folder_ = fs::temp_directory_path() / ("sculpt_session_" + std::to_string(::getpid()));
-    fs::create_directories(folder_);
     if (const char* images = std::getenv("SCULPT_SESSION_IMAGES")) images_ = images;
   }
   // The application on `scene` (empty: the default bunny), as `sculpt --headless` would run it.
@@ -91,8 +90,6 @@ class SculptSession : public ::testing::Test {
     app_.reset();
     if (window_) glfwDestroyWindow(window_);
     glfwTerminate();
-    std::error_code ignored;
-    fs::remove_all(folder_, ignored);
   }
 
   void frames(int count, const std::string& screenshot = {}) {
@@ -134,7 +131,8 @@ class SculptSession : public ::testing::Test {
   const SceneGeometry& geometry() const { return *app_->sceneView().geometry(); }
 
   GLFWwindow* window_ = nullptr;
-  fs::path folder_;
+  test::ScratchDirectory scratch_{"sculpt_session"};  // preferences, recovery and saved files
+  const fs::path& folder_ = scratch_.path();
   std::string images_;
   std::unique_ptr<SculptApp> app_;
   Pointer pointer_;

@@ -3,6 +3,8 @@
 // damaged preferences file gives defaults with a warning.
 
 #include <gtest/gtest.h>
+
+#include "support/scratch_directory.h"
 #include <unistd.h>
 
 #include <filesystem>
@@ -18,14 +20,8 @@ namespace {
 
 class AutosaveTest : public ::testing::Test {
  protected:
-  void SetUp() override {
-    dir_ = std::filesystem::temp_directory_path() /
-           ("sculpt_autosave_test_" + std::to_string(::getpid()));
-    std::filesystem::remove_all(dir_);
-    std::filesystem::create_directories(dir_);
-  }
-  void TearDown() override { std::filesystem::remove_all(dir_); }
-  std::filesystem::path dir_;
+  test::ScratchDirectory scratch_{"sculpt_autosave_test"};
+  const std::filesystem::path& dir_ = scratch_.path();
 };
 
 Project smallProject(double x) {

@@ -4,6 +4,8 @@
 #include "project/project_file.h"
 
 #include <gtest/gtest.h>
+
+#include "support/scratch_directory.h"
 #include <signal.h>
 #include <sys/resource.h>
 #include <sys/wait.h>
@@ -63,14 +65,8 @@ using nlohmann::json;
 
 class ProjectFileTest : public ::testing::Test {
  protected:
-  void SetUp() override {
-    dir_ = std::filesystem::temp_directory_path() /
-           ("sculpt_project_file_test_" + std::to_string(::getpid()));
-    std::filesystem::remove_all(dir_);
-    std::filesystem::create_directories(dir_);
-  }
-  void TearDown() override { std::filesystem::remove_all(dir_); }
-  std::filesystem::path dir_;
+  test::ScratchDirectory scratch_{"sculpt_project_file_test"};
+  const std::filesystem::path& dir_ = scratch_.path();
 };
 
 // The FileError message of parsing `bytes`, or "" (with a failure) when it parsed.
