@@ -14,11 +14,6 @@
 namespace sculpt::app {
 namespace {
 
-bool sameMaterial(const Material& a, const Material& b) {
-  return a.youngs == b.youngs && a.poisson == b.poisson && a.density == b.density &&
-         a.damping == b.damping;
-}
-
 // Per cellMesh cell, the value of its element.
 void toCells(const SceneGeometry& geometry, const std::vector<double>& perElement,
              std::vector<float>& perCell) {
@@ -246,7 +241,7 @@ std::string ScenePhysics::applyLive(const SceneSettings& settings) {
     if (std::string problem = simulator_->setSettings(simulation); !problem.empty()) return problem;
     changed = true;
   }
-  if (!sameMaterial(settings.material, applied_.material)) {
+  if (settings.material != applied_.material) {
     std::string problem;
     if (model_->paintMaterial(Eigen::Vector3d::Zero(), std::numeric_limits<double>::infinity(),
                               settings.material, &problem) < 0)

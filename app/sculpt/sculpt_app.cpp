@@ -367,12 +367,9 @@ void SculptApp::carryOutRequests() {
       } else {
         const Material before = controller_->settings().material;
         controller_->applySettings(model_.settings);
-        const Material& after = model_.settings.material;
         // The body material fills every sample: an edit of the project (one undo entry, made
         // when the slider is let go).
-        if (before.youngs != after.youngs || before.poisson != after.poisson ||
-            before.density != after.density || before.damping != after.damping)
-          materialEditPending_ = true;
+        if (model_.settings.material != before) materialEditPending_ = true;
       }
     }
     if (!r.loadScene.empty()) openFile(r.loadScene == "<default>" ? std::string() : r.loadScene);

@@ -11,6 +11,7 @@ struct Material {
   double damping = 0.0;     ///< kg/(m^3 s): damping density gamma, D = integral gamma N^T N
   double youngs = 1.0e5;    ///< Pa
   double poisson = 0.3;     ///< in (-1, 0.5)
+  bool operator==(const Material&) const = default;  ///< by value (0.0 == -0.0)
 };
 
 struct LameParameters {
