@@ -8,6 +8,10 @@
 #include "util/parallel_for.h"
 
 namespace sculpt {
+namespace {
+// Fewer rows than this run on the calling thread: below it a fork-join costs more than it saves.
+constexpr uint32_t kParallelRows = 1024;
+}  // namespace
 
 StencilTable::StencilTable(uint32_t numColumns, std::vector<uint32_t> offsets,
                            std::vector<uint32_t> indices, std::vector<double> weights)
@@ -31,7 +35,7 @@ void StencilTable::apply(const Points& src, Points& dst) const {
   dst.resize(numRows(), 3);
   const double* in = src.data();
   double* out = dst.data();
-  parallelChunks(numRows(), 4096, [&](uint32_t begin, uint32_t end, unsigned) {
+  parallelChunks(numRows(), kParallelRows, [&](uint32_t begin, uint32_t end, unsigned) {
     for (uint32_t r = begin; r < end; ++r) {
       double x = 0, y = 0, z = 0;
       for (uint32_t k = offsets_[r]; k < offsets_[r + 1]; ++k) {
@@ -54,7 +58,7 @@ void StencilTable::applyTranspose(const Points& src, Points& dst) const {
   // buffer of its own, and the buffers are summed. This is on the FEM's per-step path (node
   // forces onto control points), where #columns is much smaller than #rows.
   std::vector<Points> partial(workerCount());
-  parallelChunks(numRows(), 4096, [&](uint32_t begin, uint32_t end, unsigned worker) {
+  parallelChunks(numRows(), kParallelRows, [&](uint32_t begin, uint32_t end, unsigned worker) {
     Points& out = partial[worker];
     out.setZero(numColumns_, 3);
     for (uint32_t r = begin; r < end; ++r)

@@ -1,6 +1,8 @@
 #include "util/parallel_for.h"
 
 #include <algorithm>
+#include <atomic>
+#include <chrono>
 #include <condition_variable>
 #include <cstdlib>
 #include <mutex>
@@ -12,16 +14,22 @@ namespace {
 
 // Worker threads that live for the whole program: a fork-join costs a wake-up instead of a
 // thread creation (tens of microseconds), which matters for per-step loops of a millisecond.
+// Both sides spin for a short while before they block: a simulation step runs several loops
+// back to back with short serial parts between them, and on a virtual machine a futex wake-up
+// of a sleeping thread costs tens of microseconds. The spin is bounded in time, so an idle
+// pool sleeps. With more workers than hardware threads (SCULPT_THREADS) nobody spins: a
+// spinning thread would take the core from one with work.
 class WorkerPool {
  public:
-  explicit WorkerPool(unsigned helpers) {
+  explicit WorkerPool(unsigned helpers)
+      : spin_(helpers + 1 <= std::max(1u, std::thread::hardware_concurrency())) {
     for (unsigned k = 0; k < helpers; ++k) threads_.emplace_back([this, k] { loop(k + 1); });
   }
   ~WorkerPool() {
     {
       std::lock_guard lock(mutex_);
       stopping_ = true;
-      ++generation_;
+      generation_.fetch_add(1, std::memory_order_release);
     }
     wake_.notify_all();
     for (auto& t : threads_) t.join();
@@ -35,44 +43,71 @@ class WorkerPool {
       std::lock_guard lock(mutex_);
       task_ = &task;
       active_ = count - 1;
-      pending_ = count - 1;
-      ++generation_;
+      pending_.store(count - 1, std::memory_order_relaxed);
+      generation_.fetch_add(1, std::memory_order_release);
     }
     wake_.notify_all();
     task(0);
+    if (spinUntil([this] { return pending_.load(std::memory_order_acquire) == 0; })) return;
     std::unique_lock lock(mutex_);
-    done_.wait(lock, [this] { return pending_ == 0; });
-    task_ = nullptr;
+    done_.wait(lock, [this] { return pending_.load(std::memory_order_acquire) == 0; });
   }
 
   unsigned size() const { return static_cast<unsigned>(threads_.size()) + 1; }
 
  private:
+  // Polls `ready` for up to kSpin; true as soon as it holds.
+  template <class Ready>
+  bool spinUntil(const Ready& ready) const {
+    if (!spin_) return false;
+    constexpr auto kSpin = std::chrono::microseconds(200);
+    const auto deadline = std::chrono::steady_clock::now() + kSpin;
+    for (;;) {
+      for (int k = 0; k < 64; ++k) {
+        if (ready()) return true;
+        pause();
+      }
+      if (std::chrono::steady_clock::now() >= deadline) return false;
+    }
+  }
+  static void pause() {
+#if defined(__x86_64__) || defined(__i386__)
+    __builtin_ia32_pause();
+#endif
+  }
+
   void loop(unsigned worker) {
     uint64_t seen = 0;
     for (;;) {
+      spinUntil([&] { return generation_.load(std::memory_order_acquire) != seen; });
       const std::function<void(unsigned)>* task = nullptr;
       {
+        // The generation, the task and the worker count are read together under the lock
+        // that publishes them.
         std::unique_lock lock(mutex_);
-        wake_.wait(lock, [&] { return generation_ != seen; });
-        seen = generation_;
+        wake_.wait(lock, [&] { return generation_.load(std::memory_order_relaxed) != seen; });
+        seen = generation_.load(std::memory_order_relaxed);
         if (stopping_) return;
         if (worker > active_) continue;
         task = task_;
       }
       (*task)(worker);
-      std::lock_guard lock(mutex_);
-      if (--pending_ == 0) done_.notify_one();
+      if (pending_.fetch_sub(1, std::memory_order_acq_rel) == 1) {
+        std::lock_guard lock(mutex_);
+        done_.notify_one();
+      }
     }
   }
 
+  const bool spin_;
   std::vector<std::thread> threads_;
   std::mutex mutex_, runMutex_;
   std::condition_variable wake_, done_;
-  const std::function<void(unsigned)>* task_ = nullptr;
-  unsigned active_ = 0, pending_ = 0;
-  uint64_t generation_ = 0;
-  bool stopping_ = false;
+  const std::function<void(unsigned)>* task_ = nullptr;  // guarded by mutex_
+  unsigned active_ = 0;                                  // guarded by mutex_
+  bool stopping_ = false;                                // guarded by mutex_
+  std::atomic<unsigned> pending_{0};
+  std::atomic<uint64_t> generation_{0};  // written under mutex_, polled without it
 };
 
 WorkerPool& pool() {

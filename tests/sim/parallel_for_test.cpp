@@ -1,0 +1,86 @@
+// The worker pool behind parallelChunks: every index exactly once, whether the helpers are
+// spinning (back-to-back loops) or asleep (after a pause), from several calling threads at once,
+// and nested loops inline.
+#include <gtest/gtest.h>
+
+#include <atomic>
+#include <chrono>
+#include <thread>
+#include <vector>
+
+#include "util/parallel_for.h"
+
+namespace sculpt {
+namespace {
+
+// Runs one loop over n indices and checks that each was visited exactly once, by the worker
+// that owns its chunk.
+void expectEachIndexOnce(uint32_t n, uint32_t minParallel) {
+  std::vector<std::atomic<int>> visits(n);
+  std::vector<std::atomic<int>> chunkOwner(workerCount());
+  for (auto& owner : chunkOwner) owner = 0;
+  parallelChunks(n, minParallel, [&](uint32_t begin, uint32_t end, unsigned worker) {
+    ASSERT_LT(worker, workerCount());
+    chunkOwner[worker].fetch_add(1);
+    for (uint32_t i = begin; i < end; ++i) visits[i].fetch_add(1);
+  });
+  for (uint32_t i = 0; i < n; ++i) ASSERT_EQ(visits[i].load(), 1) << "index " << i << " of " << n;
+  for (auto& owner : chunkOwner) ASSERT_LE(owner.load(), 1);
+}
+
+TEST(ParallelChunks, EveryIndexOnceInBackToBackLoops) {
+  for (int round = 0; round < 3000; ++round) expectEachIndexOnce(uint32_t(1 + round % 97), 1);
+}
+
+TEST(ParallelChunks, EveryIndexOnceAfterTheWorkersFellAsleep) {
+  for (int round = 0; round < 20; ++round) {
+    // Longer than the pool's spin, so the helpers block and have to be woken.
+    std::this_thread::sleep_for(std::chrono::milliseconds(2));
+    expectEachIndexOnce(1000, 1);
+  }
+}
+
+TEST(ParallelChunks, BelowTheThresholdRunsInlineAsOneChunk) {
+  int calls = 0;
+  parallelChunks(10, 100, [&](uint32_t begin, uint32_t end, unsigned worker) {
+    ++calls;
+    EXPECT_EQ(begin, 0u);
+    EXPECT_EQ(end, 10u);
+    EXPECT_EQ(worker, 0u);
+  });
+  EXPECT_EQ(calls, 1);
+}
+
+TEST(ParallelChunks, NestedLoopsRunInline) {
+  std::vector<std::atomic<int>> visits(64 * 64);
+  parallelChunks(64, 1, [&](uint32_t begin, uint32_t end, unsigned) {
+    for (uint32_t i = begin; i < end; ++i)
+      parallelChunks(64, 1, [&](uint32_t innerBegin, uint32_t innerEnd, unsigned innerWorker) {
+        EXPECT_EQ(innerWorker, 0u);  // inline: one chunk on the calling thread
+        for (uint32_t j = innerBegin; j < innerEnd; ++j) visits[i * 64 + j].fetch_add(1);
+      });
+  });
+  for (auto& v : visits) ASSERT_EQ(v.load(), 1);
+}
+
+TEST(ParallelChunks, CallsFromSeveralThreadsAreSerialisedAndComplete) {
+  std::atomic<int> failures{0};
+  std::vector<std::thread> callers;
+  for (int t = 0; t < 3; ++t)
+    callers.emplace_back([&, t] {
+      for (int round = 0; round < 500; ++round) {
+        const uint32_t n = uint32_t(50 + 13 * t + round % 7);
+        std::vector<int> visits(n, 0);
+        parallelChunks(n, 1, [&](uint32_t begin, uint32_t end, unsigned) {
+          for (uint32_t i = begin; i < end; ++i) ++visits[i];  // chunks are disjoint
+        });
+        for (int v : visits)
+          if (v != 1) failures.fetch_add(1);
+      }
+    });
+  for (auto& caller : callers) caller.join();
+  EXPECT_EQ(failures.load(), 0);
+}
+
+}  // namespace
+}  // namespace sculpt
