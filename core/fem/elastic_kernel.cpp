@@ -94,16 +94,14 @@ void ElasticKernel::resetRotations() {
   rotations_.assign(mesh_.numElements(), Eigen::Matrix3d::Identity());
 }
 
-uint32_t ElasticKernel::gatherElement(uint32_t e, const Points& x, double* ue) const {
+uint32_t ElasticKernel::gatherElement(uint32_t e, const NodeRows& x, double* ue) const {
   const uint32_t numTricubic = mesh_.numTricubic();
-  const bool tricubic = e < numTricubic;
-  const uint32_t* ids =
-      tricubic ? mesh_.tricubicNodes[e].data() : mesh_.linearNodes[e - numTricubic].data();
-  const int count = tricubic ? kTricubicNodes : kLinearNodes;
-  // Coordinate-major element vectors (the kernels' layout): ue[c*count + n].
-  for (int n = 0; n < count; ++n)
-    for (int c = 0; c < 3; ++c) ue[c * count + n] = x(ids[n], c);
-  return uint32_t(count);
+  if (e < numTricubic) {
+    gatherNodeRows(x, mesh_.tricubicNodes[e].data(), kTricubicNodes, ue);
+    return kTricubicNodes;
+  }
+  gatherNodeRows(x, mesh_.linearNodes[e - numTricubic].data(), kLinearNodes, ue);
+  return kLinearNodes;
 }
 
 Eigen::Matrix3d ElasticKernel::elementRotation(uint32_t e, const double* ue) const {
@@ -138,11 +136,11 @@ Eigen::Matrix3d ElasticKernel::elementRotation(uint32_t e, const double* ue) con
 }
 
 void ElasticKernel::updateRotations(const Points& nodes) {
-  displacement_ = nodes - mesh_.restNodes;
+  toNodeRows(nodes, mesh_.restNodes, source_);
   parallelChunks(mesh_.numElements(), 256, [&](uint32_t begin, uint32_t end, unsigned) {
     alignas(64) double ue[kTricubicNodes * 3];
     for (uint32_t e = begin; e < end; ++e) {
-      gatherElement(e, displacement_, ue);
+      gatherElement(e, source_, ue);
       rotations_[e] = elementRotation(e, ue);
     }
   });
@@ -175,14 +173,13 @@ double ElasticKernel::run(const Points& x, Mode mode, Points* out, bool withEner
   const uint32_t numTricubic = mesh_.numTricubic();
   const uint32_t numElements = mesh_.numElements();
   const unsigned workers = std::min<unsigned>(workerCount(), std::max(1u, numElements / 32));
-  if (out) {
-    workerBuffers_.resize(workers);
-    for (Points& buffer : workerBuffers_) buffer.setZero(mesh_.numNodes(), 3);
-  }
+  if (out) workerBuffers_.resize(workers);
   std::vector<double> workerEnergy(workers, 0.0);
   // The kernels take displacements in gradient mode (x holds positions there).
-  if (withRestTerm) displacement_ = x - mesh_.restNodes;
-  const Points& source = withRestTerm ? displacement_ : x;
+  if (withRestTerm)
+    toNodeRows(x, mesh_.restNodes, source_);
+  else
+    toNodeRows(x, source_);
   // Equal work per worker: a tricubic element costs about kTricubicCost linear ones.
   constexpr double kTricubicCost = 5.0;
   const double tricubicCost = kTricubicCost * numTricubic;
@@ -197,17 +194,17 @@ double ElasticKernel::run(const Points& x, Mode mode, Points* out, bool withEner
 
   parallelChunks(workers, 1, [&](uint32_t firstWorker, uint32_t lastWorker, unsigned) {
     for (uint32_t worker = firstWorker; worker < lastWorker; ++worker) {
-      Points* sink = out ? &workerBuffers_[worker] : nullptr;
+      NodeRows* sink = out ? &workerBuffers_[worker] : nullptr;
+      if (sink) sink->setZero(mesh_.numNodes(), 4);
       double energy = 0;
       alignas(64) double ue[64 * 3];  // displacements (gradient) or the direction (Hessian)
       alignas(64) double ge[64 * 3];
       const uint32_t end = worker + 1 == workers ? numElements : chunkStart(worker + 1);
       for (uint32_t e = chunkStart(worker); e < end; ++e) {
         const bool tricubic = e < numTricubic;
-        const uint32_t count = gatherElement(e, source, ue);
+        const uint32_t count = gatherElement(e, source_, ue);
         if (newRotations) newRotations[e] = elementRotation(e, ue);
         const Eigen::Matrix3d& R = rotations_[e];
-        if (sink) std::fill(ge, ge + count * 3, 0.0);
         double* gradient = sink ? ge : nullptr;
         double elementEnergy;
         if (tricubic) {
@@ -244,15 +241,14 @@ double ElasticKernel::run(const Points& x, Mode mode, Points* out, bool withEner
         if (!sink) continue;
         const uint32_t* ids = tricubic ? mesh_.tricubicNodes[e].data()
                                        : mesh_.linearNodes[e - numTricubic].data();
-        for (uint32_t n = 0; n < count; ++n)
-          for (int c = 0; c < 3; ++c) (*sink)(ids[n], c) += ge[c * count + n];
+        scatterAddNodeRows(ge, ids, int(count), *sink);
       }
       workerEnergy[worker] = energy;
     }
   });
 
   if (out) {
-    for (unsigned w = 0; w < workers; ++w) *out += workerBuffers_[w];
+    for (unsigned w = 0; w < workers; ++w) *out += workerBuffers_[w].leftCols<3>();
   }
   double total = 0;
   for (double v : workerEnergy) total += v;

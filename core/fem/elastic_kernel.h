@@ -14,6 +14,7 @@
 #include <vector>
 
 #include "fem/fem_mesh.h"
+#include "fem/node_rows.h"
 
 namespace sculpt {
 
@@ -53,14 +54,14 @@ class ElasticKernel {
              double* perElement = nullptr, Eigen::Matrix3d* newRotations = nullptr) const;
   // Gathers element e's node values of x into ue in the kernels' coordinate-major layout;
   // returns the node count.
-  uint32_t gatherElement(uint32_t e, const Points& x, double* ue) const;
+  uint32_t gatherElement(uint32_t e, const NodeRows& x, double* ue) const;
   // The rotation of element e from its gathered displacements (warm-started from rotations_[e]).
   Eigen::Matrix3d elementRotation(uint32_t e, const double* ue) const;
 
   const FemMesh& mesh_;
   std::vector<Eigen::Matrix3d> rotations_;
-  mutable std::vector<Points> workerBuffers_;
-  mutable Points displacement_;  // x - rest of the current pass
+  mutable std::vector<NodeRows> workerBuffers_;
+  mutable NodeRows source_;  // the pass's input: x - rest (gradient mode) or the direction
   // Tricubic rest data packed for tricubicElementKernel.
   std::vector<double> tricubicInverseJacobian_, tricubicVolumeLambda_, tricubicVolumeMu_;
   std::vector<size_t> tricubicJacobianOffset_;  // element's start in tricubicInverseJacobian_

@@ -49,7 +49,7 @@ double linearElementKernel(const double* u, const LinearPacked& element, const E
     for (int r = 0; r < 3; ++r)
       gl[r] = (S[r][0] * dN[a][0] + S[r][1] * dN[a][1] + S[r][2] * dN[a][2]).sum();
     for (int c = 0; c < 3; ++c)
-      gradient[c * 8 + a] += R(c, 0) * gl[0] + R(c, 1) * gl[1] + R(c, 2) * gl[2];
+      gradient[c * 8 + a] = R(c, 0) * gl[0] + R(c, 1) * gl[1] + R(c, 2) * gl[2];
   }
   return energy;
 }

@@ -182,12 +182,11 @@ double tricubicElementKernel(const double* u, const TricubicPacked& element,
       for (int i = 1; i < 4; ++i) sum += T.B[i][a] * load(QB[i] + n) + T.D[i][a] * load(QD[i] + n);
       store(ul + (n / 16) * 64 + a * 16 + n % 16, sum);
     }
-  // Rotated back to the world frame and added to the gradient.
+  // Rotated back to the world frame.
   for (int c = 0; c < 3; ++c)
     for (int n = 0; n < 64; n += 4)
-      store(gradient + c * 64 + n,
-            load(gradient + c * 64 + n) + R(c, 0) * load(ul + n) + R(c, 1) * load(ul + 64 + n) +
-                R(c, 2) * load(ul + 128 + n));
+      store(gradient + c * 64 + n, R(c, 0) * load(ul + n) + R(c, 1) * load(ul + 64 + n) +
+                                       R(c, 2) * load(ul + 128 + n));
   return energy;
 }
 

@@ -17,8 +17,8 @@ struct TricubicPacked {
 };
 
 /// u: 64 node values (displacements or a direction), coordinate-major: coordinate c of node
-/// a*16+b*4+g at u[c*64 + a*16+b*4+g]. Adds the node gradient to `gradient` (same layout) when
-/// non-null and returns the energy contribution when `withEnergy`. `withRestTerm` adds
+/// a*16+b*4+g at u[c*64 + a*16+b*4+g]. Writes the node gradient to `gradient` (same layout)
+/// when non-null and returns the energy contribution when `withEnergy`. `withRestTerm` adds
 /// sym(R) - I to the strain (gradient mode).
 double tricubicElementKernel(const double* u, const TricubicPacked& element,
                              const Eigen::Matrix3d& R, bool withRestTerm, bool withEnergy,
