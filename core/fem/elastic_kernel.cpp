@@ -104,10 +104,9 @@ uint32_t ElasticKernel::gatherElement(uint32_t e, const NodeRows& x, double* ue)
   return kLinearNodes;
 }
 
-Eigen::Matrix3d ElasticKernel::elementRotation(uint32_t e, const double* ue) const {
+Eigen::Matrix3d ElasticKernel::centreDeformationGradient(uint32_t e, const double* ue) const {
   // F = I + (du/dX) at the element centre, from the gathered displacements (the rest geometry
-  // maps to I); polar rotation warm-started from the element's last rotation, which changes
-  // little between calls.
+  // maps to I).
   Eigen::Matrix3d F;
   const uint32_t numTricubic = mesh_.numTricubic();
   if (e < numTricubic) {
@@ -132,16 +131,26 @@ Eigen::Matrix3d ElasticKernel::elementRotation(uint32_t e, const double* ue) con
       }
   }
   F += Eigen::Matrix3d::Identity();
-  return polarRotation(F, rotations_[e]);
+  return F;
+}
+
+void ElasticKernel::updateGroupRotations(uint32_t first, int count, const double (*ue)[192],
+                                         Eigen::Matrix3d* newRotations) const {
+  // Warm-started from the elements' last rotations, which change little between calls; four
+  // elements at a time share the vector lanes.
+  Eigen::Matrix3d F[4];
+  for (int k = 0; k < count; ++k) F[k] = centreDeformationGradient(first + uint32_t(k), ue[k]);
+  polarRotations(F, rotations_.data() + first, count, newRotations + first);
 }
 
 void ElasticKernel::updateRotations(const Points& nodes) {
   toNodeRows(nodes, mesh_.restNodes, source_);
   parallelChunks(mesh_.numElements(), 256, [&](uint32_t begin, uint32_t end, unsigned) {
-    alignas(64) double ue[kTricubicNodes * 3];
-    for (uint32_t e = begin; e < end; ++e) {
-      gatherElement(e, source_, ue);
-      rotations_[e] = elementRotation(e, ue);
+    alignas(64) double ue[4][kTricubicNodes * 3];
+    for (uint32_t first = begin; first < end; first += 4) {
+      const int group = int(std::min<uint32_t>(4, end - first));
+      for (int k = 0; k < group; ++k) gatherElement(first + uint32_t(k), source_, ue[k]);
+      updateGroupRotations(first, group, ue, rotations_.data());
     }
   });
 }
@@ -197,13 +206,21 @@ double ElasticKernel::run(const Points& x, Mode mode, Points* out, bool withEner
       NodeRows* sink = out ? &workerBuffers_[worker] : nullptr;
       if (sink) sink->setZero(mesh_.numNodes(), 4);
       double energy = 0;
-      alignas(64) double ue[64 * 3];  // displacements (gradient) or the direction (Hessian)
+      // Displacements (gradient) or the direction (Hessian) of four elements: their rotations
+      // are found together.
+      alignas(64) double ueGroup[4][64 * 3];
       alignas(64) double ge[64 * 3];
+      const uint32_t begin = chunkStart(worker);
       const uint32_t end = worker + 1 == workers ? numElements : chunkStart(worker + 1);
-      for (uint32_t e = chunkStart(worker); e < end; ++e) {
+      for (uint32_t e = begin; e < end; ++e) {
         const bool tricubic = e < numTricubic;
-        const uint32_t count = gatherElement(e, source_, ue);
-        if (newRotations) newRotations[e] = elementRotation(e, ue);
+        const double* ue = ueGroup[(e - begin) % 4];
+        if ((e - begin) % 4 == 0) {
+          const int group = int(std::min<uint32_t>(4, end - e));
+          for (int k = 0; k < group; ++k) gatherElement(e + uint32_t(k), source_, ueGroup[k]);
+          if (newRotations) updateGroupRotations(e, group, ueGroup, newRotations);
+        }
+        const uint32_t count = tricubic ? kTricubicNodes : kLinearNodes;
         const Eigen::Matrix3d& R = rotations_[e];
         double* gradient = sink ? ge : nullptr;
         double elementEnergy;

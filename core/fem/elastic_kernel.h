@@ -55,8 +55,12 @@ class ElasticKernel {
   // Gathers element e's node values of x into ue in the kernels' coordinate-major layout;
   // returns the node count.
   uint32_t gatherElement(uint32_t e, const NodeRows& x, double* ue) const;
-  // The rotation of element e from its gathered displacements (warm-started from rotations_[e]).
-  Eigen::Matrix3d elementRotation(uint32_t e, const double* ue) const;
+  // F at the centre of element e from its gathered displacements.
+  Eigen::Matrix3d centreDeformationGradient(uint32_t e, const double* ue) const;
+  // newRotations[first + k] for the `count` (<= 4) elements from `first` on, from their gathered
+  // displacements ue[k], warm-started from rotations_ (which newRotations may be).
+  void updateGroupRotations(uint32_t first, int count, const double (*ue)[192],
+                            Eigen::Matrix3d* newRotations) const;
 
   const FemMesh& mesh_;
   std::vector<Eigen::Matrix3d> rotations_;

@@ -17,4 +17,9 @@ Eigen::Matrix3d polarRotation(const Eigen::Matrix3d& F);
 /// polarRotation(F) to about 1e-14.
 Eigen::Matrix3d polarRotation(const Eigen::Matrix3d& F, const Eigen::Matrix3d& guess);
 
+/// rotations[k] = polarRotation(F[k], guess[k]) for k < count (1 to 4), the four solved
+/// together in the lanes of 4-wide vectors.
+void polarRotations(const Eigen::Matrix3d* F, const Eigen::Matrix3d* guess, int count,
+                    Eigen::Matrix3d* rotations);
+
 }  // namespace sculpt

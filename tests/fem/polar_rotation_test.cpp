@@ -187,5 +187,45 @@ TEST(PolarRotation, WarmStartFromANearbyOrFarGuessGivesTheColdResult) {
   }
 }
 
+TEST(PolarRotation, FourAtOnceEqualOneAtATimeWhateverTheOtherLanesDo) {
+  // The element pass solves four rotations in the lanes of a vector; a lane that leaves the
+  // warm path (far guess, inverted or degenerate F, NaN) must not disturb its neighbours.
+  std::mt19937_64 rng(77);
+  std::normal_distribution<double> small(0.0, 0.02);
+  double worst = 0.0;
+  for (int k = 0; k < 5000; ++k) {
+    Eigen::Matrix3d F[4], guess[4], batch[4];
+    for (int l = 0; l < 4; ++l) {
+      F[l] = randomRotation(rng) * randomSpd(rng, 0.5, 2.0);
+      const Eigen::Matrix3d cold = polarRotation(F[l]);
+      guess[l] = cold * Eigen::AngleAxisd(std::abs(small(rng)),
+                                          Eigen::Vector3d(small(rng), 1.0, small(rng)).normalized())
+                            .toRotationMatrix();
+      switch ((k + l) % 9) {
+        case 1: guess[l] = -guess[l]; break;        // far (an improper guess, half turns away)
+        case 2: F[l].col(0) = -F[l].col(0); break;  // inverted
+        case 3: F[l].col(2).setZero(); break;       // degenerate
+        case 4: F[l](1, 1) = std::numeric_limits<double>::quiet_NaN(); break;
+        case 5: guess[l] = F[l]; break;             // the guess is a stretch, not a rotation
+        default: break;
+      }
+    }
+    const int count = 1 + k % 4;
+    polarRotations(F, guess, count, batch);
+    for (int l = 0; l < count; ++l) {
+      const Eigen::Matrix3d single = polarRotation(F[l], guess[l]);
+      ASSERT_TRUE(batch[l].allFinite());
+      if (!F[l].allFinite()) {
+        EXPECT_EQ(batch[l], single);
+        continue;
+      }
+      worst = std::max(worst, (batch[l] - single).cwiseAbs().maxCoeff());
+      ASSERT_LT((batch[l] - single).cwiseAbs().maxCoeff(), 1e-14)
+          << "case " << (k + l) % 9 << " lane " << l << " of " << count;
+    }
+  }
+  std::printf("four polar rotations at once: max |R_batch - R_single| = %.3g\n", worst);
+}
+
 }  // namespace
 }  // namespace sculpt
