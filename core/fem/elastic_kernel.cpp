@@ -38,30 +38,33 @@ const TricubicTables& tables() {
 
 ElasticKernel::ElasticKernel(const FemMesh& mesh)
     : mesh_(mesh), rotations_(mesh.numElements(), Eigen::Matrix3d::Identity()) {
-  // Inverse Jacobians in the kernel's layout [i*4 + j][row*3 + col][k]. An element whose rest
-  // map is affine (the same inverse Jacobian at all 64 Gauss points, to rounding: the regular
-  // interior of a lattice) stores a single [row*3 + col][k] block, read with stride 0: a
-  // sixteenth of the data, which matters once the model outgrows the caches.
+  // Rest data of each tricubic element in one contiguous block (one memory stream, prefetched
+  // as a whole): the inverse Jacobians in the kernel's layout [i*4 + j][row*3 + col][k], then
+  // 64 volume * lambda, then 64 volume * mu. An element whose rest map is affine (the same
+  // inverse Jacobian at all 64 Gauss points, to rounding: the regular interior of a lattice)
+  // stores a single [row*3 + col][k] block, read with stride 0: a sixteenth of the data, which
+  // matters once the model outgrows the caches.
   const uint32_t numTricubic = mesh.numTricubic();
-  tricubicJacobianOffset_.resize(numTricubic);
+  tricubicRestOffset_.resize(numTricubic + 1);
   tricubicJacobianStride_.resize(numTricubic);
-  tricubicInverseJacobian_.clear();
+  tricubicRest_.clear();
   for (uint32_t e = 0; e < numTricubic; ++e) {
     const Eigen::Matrix3d* J = mesh.tricubicInverseJacobian.data() + size_t(e) * 64;
     const double scale = J[0].cwiseAbs().maxCoeff();
     bool affine = true;
     for (int q = 1; q < 64 && affine; ++q)
       affine = (J[q] - J[0]).cwiseAbs().maxCoeff() <= 1e-13 * scale;
-    tricubicJacobianOffset_[e] = tricubicInverseJacobian_.size();
+    tricubicRestOffset_[e] = tricubicRest_.size();
     tricubicJacobianStride_[e] = affine ? 0 : 36;
     const int blocks = affine ? 1 : 16;
-    tricubicInverseJacobian_.resize(tricubicInverseJacobian_.size() + size_t(blocks) * 36);
-    double* out = tricubicInverseJacobian_.data() + tricubicJacobianOffset_[e];
+    tricubicRest_.resize(tricubicRest_.size() + size_t(blocks) * 36 + 128);
+    double* out = tricubicRest_.data() + tricubicRestOffset_[e];
     for (int ij = 0; ij < blocks; ++ij)
       for (int k = 0; k < 4; ++k)
         for (int rc = 0; rc < 9; ++rc)
           out[ij * 36 + rc * 4 + k] = J[affine ? 0 : ij * 4 + k](rc / 3, rc % 3);
   }
+  tricubicRestOffset_[numTricubic] = tricubicRest_.size();
   linearShapeGradient_.resize(size_t(mesh.numLinear()) * 192);
   for (uint32_t l = 0; l < mesh.numLinear(); ++l)
     for (int q = 0; q < 8; ++q) {
@@ -74,11 +77,14 @@ ElasticKernel::ElasticKernel(const FemMesh& mesh)
 
 void ElasticKernel::refreshMaterial() {
   const size_t count = size_t(mesh_.numTricubic()) * 64;
-  tricubicVolumeLambda_.resize(count);
-  tricubicVolumeMu_.resize(count);
-  for (size_t q = 0; q < count; ++q) {
-    tricubicVolumeLambda_[q] = mesh_.gaussVolume[q] * mesh_.gaussLame[q].lambda;
-    tricubicVolumeMu_[q] = mesh_.gaussVolume[q] * mesh_.gaussLame[q].mu;
+  for (uint32_t e = 0; e < mesh_.numTricubic(); ++e) {
+    double* volumeLambda = tricubicRest_.data() + tricubicRestOffset_[e + 1] - 128;
+    double* volumeMu = volumeLambda + 64;
+    for (size_t g = 0; g < 64; ++g) {
+      const size_t q = size_t(e) * 64 + g;
+      volumeLambda[g] = mesh_.gaussVolume[q] * mesh_.gaussLame[q].lambda;
+      volumeMu[g] = mesh_.gaussVolume[q] * mesh_.gaussLame[q].mu;
+    }
   }
   const size_t linearCount = size_t(mesh_.numLinear()) * 8;
   linearVolumeLambda_.resize(linearCount);
@@ -225,26 +231,15 @@ double ElasticKernel::run(const Points& x, Mode mode, Points* out, bool withEner
         double* gradient = sink ? ge : nullptr;
         double elementEnergy;
         if (tricubic) {
-          // The packed rest data (5.6 KB per element) streams from memory once the model
-          // outgrows the caches (K = 3): fetch the next element's while this one computes.
-          if (e + 1 < numTricubic) {
-            const char* next = reinterpret_cast<const char*>(tricubicInverseJacobian_.data() +
-                                                             tricubicJacobianOffset_[e + 1]);
-            const int bytes = (tricubicJacobianStride_[e + 1] == 0 ? 36 : 576) * 8;
-            for (int line = 0; line < bytes; line += 64) __builtin_prefetch(next + line);
-            const char* lambda =
-                reinterpret_cast<const char*>(tricubicVolumeLambda_.data() + size_t(e + 1) * 64);
-            const char* mu =
-                reinterpret_cast<const char*>(tricubicVolumeMu_.data() + size_t(e + 1) * 64);
-            for (int line = 0; line < 64 * 8; line += 64) {
-              __builtin_prefetch(lambda + line);
-              __builtin_prefetch(mu + line);
-            }
-          }
-          const TricubicPacked packed{tricubicInverseJacobian_.data() + tricubicJacobianOffset_[e],
-                                      tricubicJacobianStride_[e],
-                                      tricubicVolumeLambda_.data() + size_t(e) * 64,
-                                      tricubicVolumeMu_.data() + size_t(e) * 64};
+          // The rest data (up to 5.6 KB per element) streams from memory once the model
+          // outgrows the caches (K = 3): the kernel fetches the next element's while it
+          // computes, a slice per stage so that the fetches do not queue up.
+          const size_t restEnd = tricubicRestOffset_[e + 1];
+          const TricubicPacked packed{
+              tricubicRest_.data() + tricubicRestOffset_[e], tricubicJacobianStride_[e],
+              tricubicRest_.data() + restEnd - 128, tricubicRest_.data() + restEnd - 64,
+              tricubicRest_.data() + restEnd,
+              int(e + 1 < numTricubic ? tricubicRestOffset_[e + 2] - restEnd : 0)};
           elementEnergy = tricubicElementKernel(ue, packed, R, withRestTerm, withEnergy, gradient);
         } else {
           const size_t l = e - numTricubic;

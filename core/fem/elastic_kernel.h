@@ -67,9 +67,11 @@ class ElasticKernel {
   mutable std::vector<NodeRows> workerBuffers_;
   mutable NodeRows source_;  // the pass's input: x - rest (gradient mode) or the direction
   // Tricubic rest data packed for tricubicElementKernel.
-  std::vector<double> tricubicInverseJacobian_, tricubicVolumeLambda_, tricubicVolumeMu_;
-  std::vector<size_t> tricubicJacobianOffset_;  // element's start in tricubicInverseJacobian_
-  std::vector<int> tricubicJacobianStride_;     // 36, or 0 for an affine element (one block)
+  // Per element: inverse Jacobians (16 blocks of 36, or one for an affine element), then 64
+  // volume * lambda and 64 volume * mu.
+  std::vector<double> tricubicRest_;
+  std::vector<size_t> tricubicRestOffset_;   // element's start in tricubicRest_, then the end
+  std::vector<int> tricubicJacobianStride_;  // 36, or 0 for an affine element (one block)
   std::vector<double> linearShapeGradient_, linearVolumeLambda_, linearVolumeMu_;  // [l][a*3+c][q]
 };
 

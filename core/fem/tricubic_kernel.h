@@ -14,6 +14,8 @@ struct TricubicPacked {
   int jacobianStride;             ///< 36; 0 when all i*4 + j share the first block (affine)
   const double* volumeLambda;     ///< [i*16 + j*4 + k]: Gauss volume times lambda
   const double* volumeMu;         ///< [i*16 + j*4 + k]: Gauss volume times mu
+  const double* prefetch;         ///< data the next call will read (fetched into the cache)
+  int prefetchCount;              ///< its length in doubles
 };
 
 /// u: 64 node values (displacements or a direction), coordinate-major: coordinate c of node
