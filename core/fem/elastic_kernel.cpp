@@ -65,6 +65,38 @@ ElasticKernel::ElasticKernel(const FemMesh& mesh)
           out[ij * 36 + rc * 4 + k] = J[affine ? 0 : ij * 4 + k](rc / 3, rc % 3);
   }
   tricubicRestOffset_[numTricubic] = tricubicRest_.size();
+  // The kernel's own node numbering: nodes in the order the element loop first touches them,
+  // so that consecutive elements gather from and scatter to nearby rows (the mesh numbers the
+  // nodes of a level by kind: vertex, edge, face and cell points, far apart). The element node
+  // lists are kept in that numbering.
+  const uint32_t numNodes = mesh.numNodes();
+  constexpr uint32_t kUnseen = ~0u;
+  std::vector<uint32_t> kernelNode(numNodes, kUnseen);
+  meshNode_.clear();
+  meshNode_.reserve(numNodes);
+  elementNodes_.clear();
+  elementNodes_.reserve(size_t(numTricubic) * kTricubicNodes + size_t(mesh.numLinear()) * kLinearNodes);
+  auto number = [&](uint32_t node) {
+    if (kernelNode[node] == kUnseen) {
+      kernelNode[node] = uint32_t(meshNode_.size());
+      meshNode_.push_back(node);
+    }
+    elementNodes_.push_back(kernelNode[node]);
+  };
+  for (const auto& nodes : mesh.tricubicNodes)
+    for (uint32_t node : nodes) number(node);
+  for (const auto& nodes : mesh.linearNodes)
+    for (uint32_t node : nodes) number(node);
+  for (uint32_t node = 0; node < numNodes; ++node)  // in no element: still a row
+    if (kernelNode[node] == kUnseen) {
+      kernelNode[node] = uint32_t(meshNode_.size());
+      meshNode_.push_back(node);
+    }
+  restRows_.resize(numNodes, 4);
+  for (uint32_t k = 0; k < numNodes; ++k) {
+    restRows_.row(k).head<3>() = mesh.restNodes.row(meshNode_[k]);
+    restRows_(k, 3) = 0.0;
+  }
   linearShapeGradient_.resize(size_t(mesh.numLinear()) * 192);
   for (uint32_t l = 0; l < mesh.numLinear(); ++l)
     for (int q = 0; q < 8; ++q) {
@@ -100,14 +132,27 @@ void ElasticKernel::resetRotations() {
   rotations_.assign(mesh_.numElements(), Eigen::Matrix3d::Identity());
 }
 
-uint32_t ElasticKernel::gatherElement(uint32_t e, const NodeRows& x, double* ue) const {
+const uint32_t* ElasticKernel::elementNodes(uint32_t e) const {
   const uint32_t numTricubic = mesh_.numTricubic();
-  if (e < numTricubic) {
-    gatherNodeRows(x, mesh_.tricubicNodes[e].data(), kTricubicNodes, ue);
-    return kTricubicNodes;
+  return e < numTricubic
+             ? elementNodes_.data() + size_t(e) * kTricubicNodes
+             : elementNodes_.data() + size_t(numTricubic) * kTricubicNodes +
+                   size_t(e - numTricubic) * kLinearNodes;
+}
+
+uint32_t ElasticKernel::gatherElement(uint32_t e, const NodeRows& x, double* ue) const {
+  const int count = e < mesh_.numTricubic() ? kTricubicNodes : kLinearNodes;
+  gatherNodeRows(x, elementNodes(e), count, ue);
+  return uint32_t(count);
+}
+
+void ElasticKernel::loadSource(const Points& x, bool displacement) const {
+  source_.resize(x.rows(), 4);
+  for (Eigen::Index k = 0; k < x.rows(); ++k) {
+    source_.row(k).head<3>() = x.row(meshNode_[size_t(k)]);
+    source_(k, 3) = 0.0;
   }
-  gatherNodeRows(x, mesh_.linearNodes[e - numTricubic].data(), kLinearNodes, ue);
-  return kLinearNodes;
+  if (displacement) source_ -= restRows_;
 }
 
 Eigen::Matrix3d ElasticKernel::centreDeformationGradient(uint32_t e, const double* ue) const {
@@ -150,7 +195,7 @@ void ElasticKernel::updateGroupRotations(uint32_t first, int count, const double
 }
 
 void ElasticKernel::updateRotations(const Points& nodes) {
-  toNodeRows(nodes, mesh_.restNodes, source_);
+  loadSource(nodes, true);
   parallelChunks(mesh_.numElements(), 256, [&](uint32_t begin, uint32_t end, unsigned) {
     alignas(64) double ue[4][kTricubicNodes * 3];
     for (uint32_t first = begin; first < end; first += 4) {
@@ -191,10 +236,7 @@ double ElasticKernel::run(const Points& x, Mode mode, Points* out, bool withEner
   if (out) workerBuffers_.resize(workers);
   std::vector<double> workerEnergy(workers, 0.0);
   // The kernels take displacements in gradient mode (x holds positions there).
-  if (withRestTerm)
-    toNodeRows(x, mesh_.restNodes, source_);
-  else
-    toNodeRows(x, source_);
+  loadSource(x, withRestTerm);
   // Equal work per worker: a tricubic element costs about kTricubicCost linear ones.
   constexpr double kTricubicCost = 5.0;
   const double tricubicCost = kTricubicCost * numTricubic;
@@ -251,16 +293,18 @@ double ElasticKernel::run(const Points& x, Mode mode, Points* out, bool withEner
         energy += elementEnergy;
         if (perElement) perElement[e] = elementEnergy;
         if (!sink) continue;
-        const uint32_t* ids = tricubic ? mesh_.tricubicNodes[e].data()
-                                       : mesh_.linearNodes[e - numTricubic].data();
-        scatterAddNodeRows(ge, ids, int(count), *sink);
+        scatterAddNodeRows(ge, elementNodes(e), int(count), *sink);
       }
       workerEnergy[worker] = energy;
     }
   });
 
   if (out) {
-    for (unsigned w = 0; w < workers; ++w) *out += workerBuffers_[w].leftCols<3>();
+    for (uint32_t k = 0; k < mesh_.numNodes(); ++k) {
+      Eigen::RowVector4d sum = workerBuffers_[0].row(k);
+      for (unsigned w = 1; w < workers; ++w) sum += workerBuffers_[w].row(k);
+      out->row(meshNode_[k]) += sum.head<3>();
+    }
   }
   double total = 0;
   for (double v : workerEnergy) total += v;

@@ -55,6 +55,11 @@ class ElasticKernel {
   // Gathers element e's node values of x into ue in the kernels' coordinate-major layout;
   // returns the node count.
   uint32_t gatherElement(uint32_t e, const NodeRows& x, double* ue) const;
+  // Element e's nodes in the kernel's numbering.
+  const uint32_t* elementNodes(uint32_t e) const;
+  // source_ = x (#nodes by 3, mesh numbering) in the kernel's numbering, minus the rest
+  // positions when `displacement`.
+  void loadSource(const Points& x, bool displacement) const;
   // F at the centre of element e from its gathered displacements.
   Eigen::Matrix3d centreDeformationGradient(uint32_t e, const double* ue) const;
   // newRotations[first + k] for the `count` (<= 4) elements from `first` on, from their gathered
@@ -66,6 +71,11 @@ class ElasticKernel {
   std::vector<Eigen::Matrix3d> rotations_;
   mutable std::vector<NodeRows> workerBuffers_;
   mutable NodeRows source_;  // the pass's input: x - rest (gradient mode) or the direction
+  // Rows of the node vectors above are in the kernel's numbering: meshNode_[k] is the mesh
+  // node of row k, and elementNodes_ holds every element's rows (64 per tricubic element, then
+  // 8 per linear one).
+  std::vector<uint32_t> meshNode_, elementNodes_;
+  NodeRows restRows_;
   // Tricubic rest data packed for tricubicElementKernel.
   // Per element: inverse Jacobians (16 blocks of 36, or one for an affine element), then 64
   // volume * lambda and 64 volume * mu.

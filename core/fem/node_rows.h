@@ -17,20 +17,6 @@ namespace sculpt {
 
 using NodeRows = Eigen::Matrix<double, Eigen::Dynamic, 4, Eigen::RowMajor>;
 
-/// rows = [points, 0].
-inline void toNodeRows(const Points& points, NodeRows& rows) {
-  rows.resize(points.rows(), 4);
-  rows.leftCols<3>() = points;
-  rows.col(3).setZero();
-}
-
-/// rows = [a - b, 0].
-inline void toNodeRows(const Points& a, const Points& b, NodeRows& rows) {
-  rows.resize(a.rows(), 4);
-  rows.leftCols<3>() = a - b;
-  rows.col(3).setZero();
-}
-
 /// element[c*count + n] = rows(ids[n], c) for c < 3; count is a multiple of 4.
 inline void gatherNodeRows(const NodeRows& rows, const uint32_t* ids, int count, double* element) {
   const double* base = rows.data();
