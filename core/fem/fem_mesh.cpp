@@ -73,6 +73,21 @@ StencilTable appendCentreRows(const StencilTable& stencils,
                       std::move(weights));
 }
 
+// One row per centre over the lattice nodes: the mean of its members.
+StencilTable centreRows(uint32_t numLatticeNodes,
+                        const std::vector<std::vector<uint32_t>>& centres) {
+  std::vector<uint32_t> offsets{0}, indices;
+  std::vector<double> weights;
+  for (const auto& members : centres) {
+    for (uint32_t node : members) {
+      indices.push_back(node);
+      weights.push_back(1.0 / static_cast<double>(members.size()));
+    }
+    offsets.push_back(static_cast<uint32_t>(indices.size()));
+  }
+  return StencilTable(numLatticeNodes, std::move(offsets), std::move(indices), std::move(weights));
+}
+
 struct LinearElementPlan {
   std::array<uint32_t, kLinearNodes> nodes;
   ElementType type;
@@ -136,6 +151,7 @@ std::optional<FemMesh> buildFemMesh(const CellComplex& cells, const Topology& to
   }
 
   mesh.nodeStencils = centres.empty() ? stencils : appendCentreRows(stencils, centres);
+  mesh.centreStencils = centreRows(mesh.numLatticeNodes, centres);
   mesh.restNodes.resize(mesh.numNodes(), 3);
   mesh.restNodes.topRows(mesh.numLatticeNodes) = cells.positions;
   for (size_t k = 0; k < centres.size(); ++k) {

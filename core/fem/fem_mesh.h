@@ -46,6 +46,9 @@ struct FemMesh {
   StencilTable nodeStencils;     ///< #nodes by #control points
   uint32_t numLatticeNodes = 0;  ///< rows before the virtual centre nodes
   Points restNodes;              ///< nodeStencils applied to the rest control points
+  /// #virtual centre nodes by numLatticeNodes: each centre is the mean of its cell's vertices
+  /// (nodeStencils' last rows are these rows composed with the lattice's stencils).
+  StencilTable centreStencils;
 
   // Tricubic elements come first in the element numbering, then the linear ones (trilinear
   // hexahedra and pyramids in cell order).

@@ -58,12 +58,21 @@ void StencilTable::applyTranspose(const Points& src, Points& dst) const {
   // buffer of its own, and the buffers are summed. This is on the FEM's per-step path (node
   // forces onto control points), where #columns is much smaller than #rows.
   std::vector<Points> partial(workerCount());
+  const double* in = src.data();
   parallelChunks(numRows(), kParallelRows, [&](uint32_t begin, uint32_t end, unsigned worker) {
     Points& out = partial[worker];
     out.setZero(numColumns_, 3);
-    for (uint32_t r = begin; r < end; ++r)
-      for (uint32_t k = offsets_[r]; k < offsets_[r + 1]; ++k)
-        out.row(indices_[k]) += weights_[k] * src.row(r);
+    double* sum = out.data();
+    for (uint32_t r = begin; r < end; ++r) {
+      const double x = in[3 * size_t(r)], y = in[3 * size_t(r) + 1], z = in[3 * size_t(r) + 2];
+      for (uint32_t k = offsets_[r]; k < offsets_[r + 1]; ++k) {
+        const double w = weights_[k];
+        double* column = sum + 3 * size_t(indices_[k]);
+        column[0] += w * x;
+        column[1] += w * y;
+        column[2] += w * z;
+      }
+    }
   });
   dst.setZero(numColumns_, 3);
   for (const Points& out : partial)
@@ -117,18 +126,43 @@ uint32_t StencilChain::numColumns() const {
   return levels_.empty() ? 0 : levels_.front().numColumns();
 }
 
+namespace {
+// Intermediate levels of StencilChain products: per thread, so that any number of threads
+// can apply chains at once, and kept between calls (no allocation per frame).
+std::vector<Points>& chainScratch() {
+  thread_local std::vector<Points> scratch;
+  return scratch;
+}
+}  // namespace
+
 void StencilChain::apply(const Points& src, Points& dst) const {
   if (levels_.empty()) {
     dst = src;
     return;
   }
-  scratch_.resize(levels_.size());
+  std::vector<Points>& scratch = chainScratch();
+  if (scratch.size() < levels_.size()) scratch.resize(levels_.size());
   const Points* current = &src;
   for (size_t i = 0; i + 1 < levels_.size(); ++i) {
-    levels_[i].apply(*current, scratch_[i]);
-    current = &scratch_[i];
+    levels_[i].apply(*current, scratch[i]);
+    current = &scratch[i];
   }
   levels_.back().apply(*current, dst);
+}
+
+void StencilChain::applyTranspose(const Points& src, Points& dst) const {
+  if (levels_.empty()) {
+    dst = src;
+    return;
+  }
+  std::vector<Points>& scratch = chainScratch();
+  if (scratch.size() < levels_.size()) scratch.resize(levels_.size());
+  const Points* current = &src;
+  for (size_t i = levels_.size() - 1; i > 0; --i) {
+    levels_[i].applyTranspose(*current, scratch[i]);
+    current = &scratch[i];
+  }
+  levels_.front().applyTranspose(*current, dst);
 }
 
 }  // namespace sculpt

@@ -51,12 +51,13 @@ class StencilChain {
   const std::vector<StencilTable>& levels() const { return levels_; }
   uint32_t numRows() const;
   uint32_t numColumns() const;
-  /// dst = S_K ... S_1 src. Reuses internal scratch buffers, so one chain per thread.
+  /// dst = S_K ... S_1 src (intermediate levels in per-thread scratch buffers).
   void apply(const Points& src, Points& dst) const;
+  /// dst = S_1^T ... S_K^T src: the transpose, e.g. node forces onto control points.
+  void applyTranspose(const Points& src, Points& dst) const;
 
  private:
   std::vector<StencilTable> levels_;
-  mutable std::vector<Points> scratch_;
 };
 
 }  // namespace sculpt

@@ -1,0 +1,162 @@
+// The parts of a FEM step on assets/block3.json at simulation level K (the argument): the
+// elastic element pass (rotations and forces), the tricubic kernel alone with its rest data in
+// the cache and streamed, the projections A p and A^T f, and the polar rotations. Per-element
+// and per-node figures come as counters; threads as for the program (SCULPT_THREADS).
+#include <benchmark/benchmark.h>
+
+#include <Eigen/Geometry>
+#include <optional>
+#include <random>
+#include <string>
+
+#include "fem/polar_rotation.h"
+#include "fem/tricubic_kernel.h"
+#include "sim/fem_model.h"
+#include "unit_block.h"
+
+namespace {
+
+using namespace sculpt;
+
+// block3 at level K with its nodes twisted a little about the vertical axis (every element
+// gets a rotation and a strain, as in a running simulation).
+struct Block3 {
+  std::optional<FemModel> model;
+  Points nodes;
+  explicit Block3(int level) {
+    FemSetup setup;
+    setup.level = level;
+    std::string error;
+    model = FemModel::create(bench::unitBlock(3), setup, &error);
+    if (!model) throw std::runtime_error(error);
+    const Points& rest = model->mesh().restNodes;
+    nodes = rest;
+    for (Eigen::Index n = 0; n < rest.rows(); ++n) {
+      const double angle = 0.05 * rest(n, 1);
+      const Eigen::Matrix3d R = Eigen::AngleAxisd(angle, Eigen::Vector3d::UnitY()).toRotationMatrix();
+      nodes.row(n) = (R * (rest.row(n).transpose() - Eigen::Vector3d(1.5, 0, 1.5)) +
+                      Eigen::Vector3d(1.5, 0, 1.5))
+                         .transpose();
+    }
+  }
+};
+
+Block3& block3(int level) {
+  static Block3 two(2), three(3);
+  return level == 2 ? two : three;
+}
+
+void BM_ElasticPass(benchmark::State& state) {
+  Block3& block = block3(int(state.range(0)));
+  ElasticKernel& elastic = block.model->elastic();
+  Points gradient = Points::Zero(block.nodes.rows(), 3);
+  for (auto _ : state) {
+    gradient.setZero();
+    elastic.updateRotationsAndAddGradient(block.nodes, gradient);
+    benchmark::DoNotOptimize(gradient.data());
+  }
+  const double elements = block.model->mesh().numElements();
+  state.counters["ns_per_element"] =
+      benchmark::Counter(elements, benchmark::Counter::kIsIterationInvariantRate |
+                                       benchmark::Counter::kInvert);
+  state.counters["elements"] = elements;
+}
+BENCHMARK(BM_ElasticPass)->Arg(2)->Arg(3)->Unit(benchmark::kMicrosecond);
+
+// The tricubic kernel on one thread over every tricubic element's rest data (range(1) = 0:
+// as laid out for the model, streamed from memory at K = 3) or over one element's data again
+// and again (range(1) = 1: in the cache). The difference is the cost of the data traffic.
+void BM_TricubicKernel(benchmark::State& state) {
+  Block3& block = block3(int(state.range(0)));
+  const FemMesh& mesh = block.model->mesh();
+  const bool hot = state.range(1) == 1;
+  const uint32_t count = mesh.numTricubic();
+  // Rest data packed as the elastic pass packs it (full 16 blocks of inverse Jacobians).
+  std::vector<double> rest(size_t(count) * (576 + 128));
+  for (uint32_t e = 0; e < count; ++e) {
+    double* out = rest.data() + size_t(e) * 704;
+    for (int ij = 0; ij < 16; ++ij)
+      for (int k = 0; k < 4; ++k)
+        for (int rc = 0; rc < 9; ++rc)
+          out[ij * 36 + rc * 4 + k] =
+              mesh.tricubicInverseJacobian[size_t(e) * 64 + ij * 4 + k](rc / 3, rc % 3);
+    for (int q = 0; q < 64; ++q) {
+      out[576 + q] = mesh.gaussVolume[size_t(e) * 64 + q] * mesh.gaussLame[size_t(e) * 64 + q].lambda;
+      out[640 + q] = mesh.gaussVolume[size_t(e) * 64 + q] * mesh.gaussLame[size_t(e) * 64 + q].mu;
+    }
+  }
+  std::mt19937_64 rng(1);
+  std::normal_distribution<double> noise(0.0, 1e-3);
+  alignas(64) double u[192], gradient[192];
+  for (double& v : u) v = noise(rng);
+  const Eigen::Matrix3d R = Eigen::AngleAxisd(0.3, Eigen::Vector3d(1, 2, 3).normalized()).toRotationMatrix();
+  for (auto _ : state) {
+    for (uint32_t e = 0; e < count; ++e) {
+      const double* data = rest.data() + size_t(hot ? 0 : e) * 704;
+      const double* next = rest.data() + size_t(hot || e + 1 == count ? 0 : e + 1) * 704;
+      const TricubicPacked packed{data, 36, data + 576, data + 640, next, 704};
+      benchmark::DoNotOptimize(tricubicElementKernel(u, packed, R, true, false, gradient));
+    }
+  }
+  state.counters["ns_per_element"] = benchmark::Counter(
+      count, benchmark::Counter::kIsIterationInvariantRate | benchmark::Counter::kInvert);
+}
+BENCHMARK(BM_TricubicKernel)->Args({2, 0})->Args({2, 1})->Args({3, 0})->Args({3, 1})
+    ->Unit(benchmark::kMicrosecond);
+
+void BM_NodesFromControl(benchmark::State& state) {
+  Block3& block = block3(int(state.range(0)));
+  Points nodes;
+  for (auto _ : state) {
+    block.model->nodesFromControl(block.model->restControl(), nodes);
+    benchmark::DoNotOptimize(nodes.data());
+  }
+  state.counters["nodes"] = double(block.model->numNodes());
+}
+BENCHMARK(BM_NodesFromControl)->Arg(2)->Arg(3)->Unit(benchmark::kMicrosecond);
+
+void BM_AddToControl(benchmark::State& state) {
+  Block3& block = block3(int(state.range(0)));
+  Points control = Points::Zero(block.model->numControlPoints(), 3);
+  for (auto _ : state) {
+    block.model->addToControl(block.nodes, control);
+    benchmark::DoNotOptimize(control.data());
+  }
+  state.counters["nodes"] = double(block.model->numNodes());
+}
+BENCHMARK(BM_AddToControl)->Arg(2)->Arg(3)->Unit(benchmark::kMicrosecond);
+
+// Warm-started polar rotations of 1,024 slightly rotated stretches: one at a time against four
+// in the lanes of a vector.
+void BM_PolarRotations(benchmark::State& state) {
+  const int lanes = int(state.range(0));
+  std::mt19937_64 rng(3);
+  std::normal_distribution<double> small(0.0, 0.01);
+  std::vector<Eigen::Matrix3d> F(1024), guess(1024), out(1024);
+  for (size_t k = 0; k < F.size(); ++k) {
+    const Eigen::Matrix3d R =
+        Eigen::AngleAxisd(1.0 + small(rng), Eigen::Vector3d(small(rng), 1, small(rng)).normalized())
+            .toRotationMatrix();
+    Eigen::Matrix3d S = Eigen::Matrix3d::Identity();
+    S(0, 0) += 10 * small(rng);
+    S(0, 1) = S(1, 0) = small(rng);
+    F[k] = R * S;
+    guess[k] = Eigen::AngleAxisd(1.0, Eigen::Vector3d::UnitY()).toRotationMatrix();
+  }
+  for (auto _ : state) {
+    for (size_t k = 0; k < F.size(); k += size_t(lanes)) {
+      if (lanes == 1)
+        out[k] = polarRotation(F[k], guess[k]);
+      else
+        polarRotations(&F[k], &guess[k], 4, &out[k]);
+    }
+    benchmark::DoNotOptimize(out.data());
+  }
+  state.counters["ns_per_rotation"] = benchmark::Counter(
+      double(F.size()), benchmark::Counter::kIsIterationInvariantRate | benchmark::Counter::kInvert);
+}
+BENCHMARK(BM_PolarRotations)->Arg(1)->Arg(4)->Unit(benchmark::kMicrosecond);
+
+}  // namespace
+
+BENCHMARK_MAIN();
