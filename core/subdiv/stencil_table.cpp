@@ -136,33 +136,32 @@ std::vector<Points>& chainScratch() {
 }  // namespace
 
 void StencilChain::apply(const Points& src, Points& dst) const {
-  if (levels_.empty()) {
-    dst = src;
-    return;
-  }
-  std::vector<Points>& scratch = chainScratch();
-  if (scratch.size() < levels_.size()) scratch.resize(levels_.size());
-  const Points* current = &src;
-  for (size_t i = 0; i + 1 < levels_.size(); ++i) {
-    levels_[i].apply(*current, scratch[i]);
-    current = &scratch[i];
-  }
-  levels_.back().apply(*current, dst);
+  applyLevels(src, dst, false);
 }
 
 void StencilChain::applyTranspose(const Points& src, Points& dst) const {
+  applyLevels(src, dst, true);
+}
+
+void StencilChain::applyLevels(const Points& src, Points& dst, bool transpose) const {
   if (levels_.empty()) {
     dst = src;
     return;
   }
+  const size_t count = levels_.size();
   std::vector<Points>& scratch = chainScratch();
-  if (scratch.size() < levels_.size()) scratch.resize(levels_.size());
+  if (scratch.size() < count) scratch.resize(count);
   const Points* current = &src;
-  for (size_t i = levels_.size() - 1; i > 0; --i) {
-    levels_[i].applyTranspose(*current, scratch[i]);
-    current = &scratch[i];
+  for (size_t step = 0; step < count; ++step) {
+    // S_1 first forwards; S_K^T first for the transpose.
+    const StencilTable& level = levels_[transpose ? count - 1 - step : step];
+    Points& out = step + 1 == count ? dst : scratch[step];
+    if (transpose)
+      level.applyTranspose(*current, out);
+    else
+      level.apply(*current, out);
+    current = &out;
   }
-  levels_.front().applyTranspose(*current, dst);
 }
 
 }  // namespace sculpt

@@ -57,6 +57,8 @@ class StencilChain {
   void applyTranspose(const Points& src, Points& dst) const;
 
  private:
+  void applyLevels(const Points& src, Points& dst, bool transpose) const;
+
   std::vector<StencilTable> levels_;
 };
 
