@@ -72,12 +72,25 @@ if [[ $SANITIZE -eq 1 ]]; then
   export ASAN_OPTIONS="${ASAN_OPTIONS:-detect_leaks=1:abort_on_error=1}"
   export UBSAN_OPTIONS="${UBSAN_OPTIONS:-print_stacktrace=1:halt_on_error=1}"
 fi
-CTEST=(ctest --test-dir "$ROOT/$BUILD_DIR" --output-on-failure --parallel "$JOBS")
-if [[ -z "${DISPLAY:-}" ]] && command -v xvfb-run >/dev/null 2>&1; then
-  echo "no \$DISPLAY: running the tests under xvfb-run"
-  xvfb-run -a -s "-screen 0 1280x1024x24" "${CTEST[@]}"
+run_ctest() {
+  local ctest_command=(ctest --test-dir "$ROOT/$BUILD_DIR" --output-on-failure --parallel "$JOBS" "$@")
+  if [[ -z "${DISPLAY:-}" ]] && command -v xvfb-run >/dev/null 2>&1; then
+    echo "no \$DISPLAY: running the tests under xvfb-run"
+    xvfb-run -a -s "-screen 0 1280x1024x24" "${ctest_command[@]}"
+  else
+    "${ctest_command[@]}"
+  fi
+}
+if [[ $SANITIZE -eq 1 ]]; then
+  # LeakSanitizer checks every test except the window tests (label gui). In those, Mesa's
+  # llvmpipe allocates from its JIT-compiled code and does not free the blocks at exit (about
+  # 560 bytes in 10 blocks, all reported as indirect leaks). The report stacks end in that
+  # code, which has no module name, so a suppression file cannot name them. AddressSanitizer
+  # and UBSan still check the window tests.
+  run_ctest -LE gui
+  ASAN_OPTIONS="${ASAN_OPTIONS/detect_leaks=1/detect_leaks=0}" run_ctest -L gui
 else
-  "${CTEST[@]}"
+  run_ctest
 fi
 
 stage "all tests passed ($BUILD_DIR/)"
