@@ -71,19 +71,15 @@ void BM_TricubicKernel(benchmark::State& state) {
   const FemMesh& mesh = block.model->mesh();
   const bool hot = state.range(1) == 1;
   const uint32_t count = mesh.numTricubic();
-  // Rest data packed as the elastic pass packs it (full 16 blocks of inverse Jacobians).
-  std::vector<double> rest(size_t(count) * (576 + 128));
+  // Rest data packed as the elastic pass packs it (every element with its 16 blocks of inverse
+  // Jacobians).
+  const int size = tricubicRestSize(false);
+  std::vector<double> rest(size_t(count) * size_t(size));
   for (uint32_t e = 0; e < count; ++e) {
-    double* out = rest.data() + size_t(e) * 704;
-    for (int ij = 0; ij < 16; ++ij)
-      for (int k = 0; k < 4; ++k)
-        for (int rc = 0; rc < 9; ++rc)
-          out[ij * 36 + rc * 4 + k] =
-              mesh.tricubicInverseJacobian[size_t(e) * 64 + ij * 4 + k](rc / 3, rc % 3);
-    for (int q = 0; q < 64; ++q) {
-      out[576 + q] = mesh.gaussVolume[size_t(e) * 64 + q] * mesh.gaussLame[size_t(e) * 64 + q].lambda;
-      out[640 + q] = mesh.gaussVolume[size_t(e) * 64 + q] * mesh.gaussLame[size_t(e) * 64 + q].mu;
-    }
+    double* packed = rest.data() + size_t(e) * size_t(size);
+    packTricubicInverseJacobians(mesh.tricubicInverseJacobian.data() + size_t(e) * 64, false, packed);
+    packTricubicMaterial(mesh.gaussVolume.data() + size_t(e) * 64,
+                         mesh.gaussLame.data() + size_t(e) * 64, false, packed);
   }
   std::mt19937_64 rng(1);
   std::normal_distribution<double> noise(0.0, 1e-3);
@@ -92,9 +88,9 @@ void BM_TricubicKernel(benchmark::State& state) {
   const Eigen::Matrix3d R = Eigen::AngleAxisd(0.3, Eigen::Vector3d(1, 2, 3).normalized()).toRotationMatrix();
   for (auto _ : state) {
     for (uint32_t e = 0; e < count; ++e) {
-      const double* data = rest.data() + size_t(hot ? 0 : e) * 704;
-      const double* next = rest.data() + size_t(hot || e + 1 == count ? 0 : e + 1) * 704;
-      const TricubicPacked packed{data, 36, data + 576, data + 640, next, 704};
+      const double* data = rest.data() + size_t(hot ? 0 : e) * size_t(size);
+      const double* next = rest.data() + size_t(hot || e + 1 == count ? 0 : e + 1) * size_t(size);
+      const TricubicPacked packed = tricubicPackedView(data, false, next, size);
       benchmark::DoNotOptimize(tricubicElementKernel(u, packed, R, true, false, gradient));
     }
   }

@@ -39,14 +39,13 @@ const TricubicTables& tables() {
 ElasticKernel::ElasticKernel(const FemMesh& mesh)
     : mesh_(mesh), rotations_(mesh.numElements(), Eigen::Matrix3d::Identity()) {
   // Rest data of each tricubic element in one contiguous block (one memory stream, prefetched
-  // as a whole): the inverse Jacobians in the kernel's layout [i*4 + j][row*3 + col][k], then
-  // 64 volume * lambda, then 64 volume * mu. An element whose rest map is affine (the same
+  // as a whole; layout in tricubic_kernel.h). An element whose rest map is affine (the same
   // inverse Jacobian at all 64 Gauss points, to rounding: the regular interior of a lattice)
-  // stores a single [row*3 + col][k] block, read with stride 0: a sixteenth of the data, which
-  // matters once the model outgrows the caches.
+  // stores a single block of inverse Jacobians: a sixteenth of that data, which matters once
+  // the model outgrows the caches.
   const uint32_t numTricubic = mesh.numTricubic();
   tricubicRestOffset_.resize(numTricubic + 1);
-  tricubicJacobianStride_.resize(numTricubic);
+  tricubicAffine_.resize(numTricubic);
   tricubicRest_.clear();
   for (uint32_t e = 0; e < numTricubic; ++e) {
     const Eigen::Matrix3d* J = mesh.tricubicInverseJacobian.data() + size_t(e) * 64;
@@ -55,14 +54,9 @@ ElasticKernel::ElasticKernel(const FemMesh& mesh)
     for (int q = 1; q < 64 && affine; ++q)
       affine = (J[q] - J[0]).cwiseAbs().maxCoeff() <= 1e-13 * scale;
     tricubicRestOffset_[e] = tricubicRest_.size();
-    tricubicJacobianStride_[e] = affine ? 0 : 36;
-    const int blocks = affine ? 1 : 16;
-    tricubicRest_.resize(tricubicRest_.size() + size_t(blocks) * 36 + 128);
-    double* out = tricubicRest_.data() + tricubicRestOffset_[e];
-    for (int ij = 0; ij < blocks; ++ij)
-      for (int k = 0; k < 4; ++k)
-        for (int rc = 0; rc < 9; ++rc)
-          out[ij * 36 + rc * 4 + k] = J[affine ? 0 : ij * 4 + k](rc / 3, rc % 3);
+    tricubicAffine_[e] = affine;
+    tricubicRest_.resize(tricubicRest_.size() + size_t(tricubicRestSize(affine)));
+    packTricubicInverseJacobians(J, affine, tricubicRest_.data() + tricubicRestOffset_[e]);
   }
   tricubicRestOffset_[numTricubic] = tricubicRest_.size();
   // The kernel's own node numbering: nodes in the order the element loop first touches them,
@@ -109,15 +103,10 @@ ElasticKernel::ElasticKernel(const FemMesh& mesh)
 
 void ElasticKernel::refreshMaterial() {
   const size_t count = size_t(mesh_.numTricubic()) * 64;
-  for (uint32_t e = 0; e < mesh_.numTricubic(); ++e) {
-    double* volumeLambda = tricubicRest_.data() + tricubicRestOffset_[e + 1] - 128;
-    double* volumeMu = volumeLambda + 64;
-    for (size_t g = 0; g < 64; ++g) {
-      const size_t q = size_t(e) * 64 + g;
-      volumeLambda[g] = mesh_.gaussVolume[q] * mesh_.gaussLame[q].lambda;
-      volumeMu[g] = mesh_.gaussVolume[q] * mesh_.gaussLame[q].mu;
-    }
-  }
+  for (uint32_t e = 0; e < mesh_.numTricubic(); ++e)
+    packTricubicMaterial(mesh_.gaussVolume.data() + size_t(e) * 64,
+                         mesh_.gaussLame.data() + size_t(e) * 64, tricubicAffine_[e],
+                         tricubicRest_.data() + tricubicRestOffset_[e]);
   const size_t linearCount = size_t(mesh_.numLinear()) * 8;
   linearVolumeLambda_.resize(linearCount);
   linearVolumeMu_.resize(linearCount);
@@ -277,11 +266,10 @@ double ElasticKernel::run(const Points& x, Mode mode, Points* out, bool withEner
           // outgrows the caches (K = 3): the kernel fetches the next element's while it
           // computes, a slice per stage so that the fetches do not queue up.
           const size_t restEnd = tricubicRestOffset_[e + 1];
-          const TricubicPacked packed{
-              tricubicRest_.data() + tricubicRestOffset_[e], tricubicJacobianStride_[e],
-              tricubicRest_.data() + restEnd - 128, tricubicRest_.data() + restEnd - 64,
+          const TricubicPacked packed = tricubicPackedView(
+              tricubicRest_.data() + tricubicRestOffset_[e], tricubicAffine_[e],
               tricubicRest_.data() + restEnd,
-              int(e + 1 < numTricubic ? tricubicRestOffset_[e + 2] - restEnd : 0)};
+              int(e + 1 < numTricubic ? tricubicRestOffset_[e + 2] - restEnd : 0));
           elementEnergy = tricubicElementKernel(ue, packed, R, withRestTerm, withEnergy, gradient);
         } else {
           const size_t l = e - numTricubic;

@@ -77,11 +77,10 @@ class ElasticKernel {
   std::vector<uint32_t> meshNode_, elementNodes_;
   NodeRows restRows_;
   // Tricubic rest data packed for tricubicElementKernel.
-  // Per element: inverse Jacobians (16 blocks of 36, or one for an affine element), then 64
-  // volume * lambda and 64 volume * mu.
+  // Per element one block of rest data (tricubicRestSize in tricubic_kernel.h).
   std::vector<double> tricubicRest_;
-  std::vector<size_t> tricubicRestOffset_;   // element's start in tricubicRest_, then the end
-  std::vector<int> tricubicJacobianStride_;  // 36, or 0 for an affine element (one block)
+  std::vector<size_t> tricubicRestOffset_;  // element's start in tricubicRest_, then the end
+  std::vector<bool> tricubicAffine_;        // one block of inverse Jacobians
   std::vector<double> linearShapeGradient_, linearVolumeLambda_, linearVolumeMu_;  // [l][a*3+c][q]
 };
 

@@ -32,6 +32,33 @@ inline void store(double* p, const V4& v) { Eigen::Map<V4>{p} = v; }
 
 }  // namespace
 
+int tricubicRestSize(bool affine) { return (affine ? 36 : 16 * 36) + 128; }
+
+void packTricubicInverseJacobians(const Eigen::Matrix3d* inverseJacobian, bool affine,
+                                  double* block) {
+  const int blocks = affine ? 1 : 16;
+  for (int ij = 0; ij < blocks; ++ij)
+    for (int k = 0; k < 4; ++k)
+      for (int rc = 0; rc < 9; ++rc)
+        block[ij * 36 + rc * 4 + k] = inverseJacobian[affine ? 0 : ij * 4 + k](rc / 3, rc % 3);
+}
+
+void packTricubicMaterial(const double* volume, const LameParameters* lame, bool affine,
+                          double* block) {
+  double* volumeLambda = block + tricubicRestSize(affine) - 128;
+  double* volumeMu = volumeLambda + 64;
+  for (int q = 0; q < 64; ++q) {
+    volumeLambda[q] = volume[q] * lame[q].lambda;
+    volumeMu[q] = volume[q] * lame[q].mu;
+  }
+}
+
+TricubicPacked tricubicPackedView(const double* block, bool affine, const double* prefetch,
+                                  int prefetchCount) {
+  const double* material = block + tricubicRestSize(affine) - 128;
+  return {block, affine ? 0 : 36, material, material + 64, prefetch, prefetchCount};
+}
+
 double tricubicElementKernel(const double* u, const TricubicPacked& element,
                              const Eigen::Matrix3d& R, bool withRestTerm, bool withEnergy,
                              double* gradient) {

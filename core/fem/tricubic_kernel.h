@@ -6,6 +6,8 @@
 
 #include <Eigen/Core>
 
+#include "fem/material.h"
+
 namespace sculpt {
 
 /// Rest data of one tricubic element, packed for the kernel.
@@ -17,6 +19,21 @@ struct TricubicPacked {
   const double* prefetch;         ///< data the next call will read (fetched into the cache)
   int prefetchCount;              ///< its length in doubles
 };
+
+/// One element's rest data as one block of doubles: its inverse Jacobians in the kernel's layout
+/// [i*4 + j][row*3 + col][k] (a single [row*3 + col][k] block for an affine element, whose 64
+/// inverse Jacobians agree), then 64 Gauss volume * lambda, then 64 Gauss volume * mu.
+int tricubicRestSize(bool affine);
+/// Writes the inverse-Jacobian part of the block from the 64 Gauss points' (dX/dxi)^-1
+/// (q = i*16 + j*4 + k); an affine element stores the first.
+void packTricubicInverseJacobians(const Eigen::Matrix3d* inverseJacobian, bool affine,
+                                  double* block);
+/// Writes the material part of the block from the 64 Gauss volumes and Lame parameters.
+void packTricubicMaterial(const double* volume, const LameParameters* lame, bool affine,
+                          double* block);
+/// The kernel's view of a block, with the data to prefetch for the next call.
+TricubicPacked tricubicPackedView(const double* block, bool affine, const double* prefetch,
+                                  int prefetchCount);
 
 /// u: 64 node values (displacements or a direction), coordinate-major: coordinate c of node
 /// a*16+b*4+g at u[c*64 + a*16+b*4+g]. Writes the node gradient to `gradient` (same layout)
