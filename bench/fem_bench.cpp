@@ -9,9 +9,9 @@
 #include <random>
 #include <string>
 
+#include "fem/fem_model.h"
 #include "fem/polar_rotation.h"
 #include "fem/tricubic_kernel.h"
-#include "sim/fem_model.h"
 #include "unit_block.h"
 
 namespace {

@@ -22,7 +22,7 @@
 #include "embed/embedded_deformer.h"
 #include "embed/interpolation_method.h"
 #include "embed/recomputed_normals.h"
-#include "io/control_mesh_json.h"  // FileError
+#include "io/file_error.h"
 #include "io/surface_file.h"
 #include "io/volume_mesh_file.h"
 #include "mesh/surface_mesh.h"

@@ -9,7 +9,7 @@
 #include <vector>
 
 #include "cli/cli_args.h"
-#include "sim/fem_model.h"
+#include "fem/fem_model.h"
 #include "sim/simulator.h"
 
 namespace sculpt::cli {

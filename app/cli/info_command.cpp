@@ -10,11 +10,11 @@
 #include "cli/cli_args.h"
 #include "cli/cli_common.h"
 #include "cli/commands.h"
+#include "fem/fem_model.h"
 #include "io/control_mesh_json.h"
 #include "mesh/cell_shape.h"
 #include "mesh/topology.h"
 #include "mesh/validation.h"
-#include "sim/fem_model.h"
 #include "subdiv/mj_refiner.h"
 #include "subdiv/regularity.h"
 

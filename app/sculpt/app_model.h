@@ -13,7 +13,7 @@
 #include "render/camera.h"
 #include "sculpt/display_settings.h"
 #include "sculpt/navigation.h"
-#include "sculpt/scene_controller.h"
+#include "scene/scene_controller.h"
 #include "sculpt/scene_view.h"
 #include "sculpt/tool_state.h"
 

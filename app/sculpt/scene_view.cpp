@@ -174,7 +174,9 @@ void SceneView::draw(const glm::mat4& view, const glm::mat4& projection,
   if (!frame_.springs.empty()) {  // pull springs: from the material point to its target
     render::LineList springs;
     std::vector<float> ends, endColours;
-    for (const auto& [point, target] : frame_.springs) {
+    for (const ToolSpring& spring : frame_.springs) {
+      const Eigen::Vector3d& point = spring.point;
+      const Eigen::Vector3d& target = spring.target;
       const glm::vec3 a(point.x(), point.y(), point.z()), b(target.x(), target.y(), target.z());
       springs.addSegment(a, b, kSpringColour);
       ends.insert(ends.end(), {a.x, a.y, a.z, b.x, b.y, b.z});

@@ -15,7 +15,7 @@
 #include "render/phong_gpu_deformer.h"
 #include "render/slice_renderer.h"
 #include "sculpt/display_settings.h"
-#include "sculpt/scene_controller.h"
+#include "scene/scene_controller.h"
 
 namespace sculpt::app {
 

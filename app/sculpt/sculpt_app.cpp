@@ -125,7 +125,7 @@ SculptApp::SculptApp(GLFWwindow* window, const Options& options, Clock::time_poi
     if (topology)
       scriptTopology_ = std::move(script);
     else
-      controller_->playScript(std::move(script));
+      controller_->loop().playScript(std::move(script));
   }
   lastFrameTime_ = rateWindowStart_ = Clock::now();
   windowReadySeconds_ = secondsSince(started_);
@@ -228,7 +228,7 @@ void SculptApp::syncScene() {
     }
     if (deferredScript_ && latest_.physicsReady && scriptSceneId_ != 0 &&
         latest_.sceneId == scriptSceneId_)
-      controller_->playScript(*std::exchange(deferredScript_, std::nullopt));
+      controller_->loop().playScript(*std::exchange(deferredScript_, std::nullopt));
     model_.status.uploadBytes = view_.lastUploadBytes();
     model_.status.uploadMs = view_.lastUploadMs();
     if (!latest_.lastStep.message.empty() && latest_.lastStep.message != model_.status.lastStepMessage)
@@ -250,7 +250,7 @@ void SculptApp::syncScene() {
     }
   }
   model_.status.build = build;
-  model_.status.playing = controller_->playing();
+  model_.status.playing = controller_->loop().playing();
   model_.status.nodes = view_.hasGeometry() ? view_.geometry()->cellMesh.numNodes() : 0;
   syncDocument();
 }
@@ -311,7 +311,7 @@ void SculptApp::handleInput(const ViewRect& view) {
   input.left = io.MouseDown[0], input.right = io.MouseDown[1], input.middle = io.MouseDown[2];
   input.modifiers = glfwModifiers(io);
   input.wheel = io.MouseWheel;
-  if (grabbing_ && input.wheel != 0.0f && !io.WantCaptureMouse) {
+  if (stroke_ != 0 && strokeTool_ == ToolKind::Pull && input.wheel != 0.0f && !io.WantCaptureMouse) {
     // While pulling, the wheel sets the target's depth (a tenth of the distance per notch).
     grabDistance_ *= std::pow(1.1f, -input.wheel);
     input.wheel = 0.0f;
@@ -348,12 +348,12 @@ void SculptApp::carryOutRequests() {
   if (r.frameAll) frameModel(true);
   if (r.standardView) camera_.setStandardView(*r.standardView);
   if (r.toggleOrthographic) camera_.toggleOrthographic();
-  if (r.togglePlay) controller_->setPlaying(!controller_->playing());
+  if (r.togglePlay) controller_->loop().setPlaying(!controller_->loop().playing());
   if (r.stepOnce) {
-    controller_->setPlaying(false);
-    controller_->stepOnce();
+    controller_->loop().setPlaying(false);
+    controller_->loop().stepOnce();
   }
-  if (r.reset) controller_->reset();
+  if (r.reset) controller_->loop().reset();
   try {
     if (r.applySettings) {
       const SceneSettings current = controller_->settings();

@@ -19,13 +19,15 @@
 #include "project/preferences.h"
 #include "render/gpu_timer.h"
 #include "sculpt/app_model.h"
-#include "sculpt/document.h"
+#include "scene/document.h"
 #include "sculpt/navigation.h"
 #include "sculpt/options.h"
 #include "sculpt/panels.h"
-#include "sculpt/scene_controller.h"
+#include "scene/scene_controller.h"
 #include "sculpt/scene_view.h"
+#include "scene/material_picker.h"
 #include "tools/session_script.h"
+#include "tools/strokes.h"
 
 namespace sculpt::app {
 
@@ -78,6 +80,9 @@ class SculptApp {
   double brushWorldRadius(float x, float y, float depth, int width, int height) const;
   Eigen::Vector3d mirrorCentre() const;
   void toolStroke(const PointerResult& stroke, float x, float y, int width, int height);
+  ToolInput toolInput(const glm::vec3& world, const std::optional<Eigen::Vector3d>& rest) const;
+  void endToolStroke();
+  void takeEyedropperResult();
   void pullStroke(const PointerResult& stroke, float x, float y, int width, int height);
   void brushStroke(const PointerResult& stroke, float x, float y, int width, int height);
   void curveStroke(const PointerResult& stroke, float x, float y, int width, int height);
@@ -122,7 +127,6 @@ class SculptApp {
   int lastFbWidth_ = 0, lastFbHeight_ = 0;
   float cursorDepth_ = 1.0f;  ///< depth under the cursor in the last drawn frame
   float grabDistance_ = 0.0f;  ///< the pull target's distance along the cursor ray (wheel)
-  bool grabbing_ = false;
   float lastCursorX_ = 0.0f, lastCursorY_ = 0.0f;
   bool cameraFramed_ = false;
   bool firstFrameReported_ = false, physicsReported_ = false;
@@ -151,17 +155,18 @@ class SculptApp {
   bool materialEditPending_ = false;  ///< the body material changed: record it once let go
   std::string lastTitle_;
   ToolKind strokeTool_ = ToolKind::Pull;
+  uint64_t stroke_ = 0;  ///< the tool stroke in progress (SimulationLoop::beginStroke); 0: none
+  std::unique_ptr<MaterialPicker> picker_;  ///< over the frame last picked in
+  uint64_t pickerFrame_ = 0, pickerScene_ = 0;
+  std::shared_ptr<Eyedropper::Result> eyedropper_;  ///< a pick on its way back
   bool strokeInverted_ = false;  ///< Ctrl at the stroke's start: push, deflate, unpin
-  bool inflating_ = false;
   float lastDabX_ = 0, lastDabY_ = 0;
   int brushKey_ = -1;            ///< the frame key held for F / Shift+F drag
   bool brushKeyDragged_ = false, brushKeyStrength_ = false;
-  glm::vec3 pullAnchor_{0.0f};   ///< where the pull started (push reflects through it)
   std::vector<Eigen::Vector3d> curveRest_;  ///< the drawn curve (rest positions)
   std::vector<glm::vec3> curveWorld_;       ///< and where it was drawn
   bool curveGrabbed_ = false;
   float curveDepth_ = 1.0f;
-  glm::vec3 curveStart_{0.0f};
   struct PickedFace {
     FaceRef face;
     std::vector<uint32_t> loop;  ///< its vertices, outward

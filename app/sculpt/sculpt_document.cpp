@@ -202,13 +202,13 @@ void SculptApp::undoRedo(bool redo) {
     hoverFace_.reset();
     loadDocumentScene();  // materials and pins come with the rebuilt scene
   } else if (change->materialsOrPins) {
-    controller_->restoreEdits(document_.project().materials, document_.project().pins);
+    controller_->loop().restoreEdits(document_.project().materials, document_.project().pins);
   }
 }
 
 void SculptApp::syncDocument() {
   // A paint or pin stroke becomes one undo entry once the simulation has captured its result.
-  if (std::optional<SceneController::Edits> edits = controller_->takeEdits()) {
+  if (std::optional<SceneEdits> edits = controller_->loop().takeEdits()) {
     if (pendingCapture_ != Capture::None) {
       Project after = document_.project();
       if (pendingCapture_ == Capture::Materials)
@@ -221,7 +221,7 @@ void SculptApp::syncDocument() {
   }
   if (materialEditPending_ && pendingCapture_ == Capture::None && !ImGui::GetIO().MouseDown[0]) {
     materialEditPending_ = false;
-    controller_->requestEdits();
+    controller_->loop().requestEdits();
     pendingCapture_ = Capture::Materials;
     pendingLabel_ = "Set material";
   }

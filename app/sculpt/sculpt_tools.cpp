@@ -62,17 +62,20 @@ std::optional<SculptApp::SurfaceHit> SculptApp::surfaceHit(float x, float y, flo
   if (!view_.hasGeometry() || depth >= 1.0f) return std::nullopt;
   const std::optional<glm::vec3> hit = camera_.unproject(x, y, depth, width, height);
   if (!hit) return std::nullopt;
-  // The surface vertex nearest the hit names the material point (its rest position).
-  std::vector<float> positions, normals;
-  view_.deformer()->capture(positions, normals);
-  size_t nearest = 0;
-  float best = std::numeric_limits<float>::max();
-  for (size_t v = 0; 3 * v < positions.size(); ++v) {
-    const glm::vec3 p(positions[3 * v], positions[3 * v + 1], positions[3 * v + 2]);
-    const float d = glm::dot(p - *hit, p - *hit);
-    if (d < best) best = d, nearest = v;
+  // The material under the hit, found on the CPU in the deformed cells of the frame drawn.
+  const SceneGeometry& geometry = *view_.geometry();
+  const SceneFrame& frame = view_.frame();
+  if (frame.nodes.rows() != geometry.cellMesh.positions.rows()) return std::nullopt;
+  if (!picker_ || pickerFrame_ != frame.version || pickerScene_ != geometry.sceneId) {
+    picker_ = std::make_unique<MaterialPicker>(geometry.cellMesh, frame.nodes);
+    pickerFrame_ = frame.version;
+    pickerScene_ = geometry.sceneId;
   }
-  return SurfaceHit{*hit, view_.geometry()->restPositions.row(static_cast<Eigen::Index>(nearest)).transpose()};
+  const Eigen::Vector3d world(hit->x, hit->y, hit->z);
+  const Eigen::Vector3d extent = geometry.restControl.colwise().maxCoeff() - geometry.restControl.colwise().minCoeff();
+  const std::optional<Eigen::Vector3d> rest = picker_->restPoint(world, 0.1 * extent.norm());
+  if (!rest) return std::nullopt;
+  return SurfaceHit{*hit, *rest};
 }
 
 double SculptApp::brushWorldRadius(float x, float y, float depth, int width, int height) const {
@@ -88,6 +91,7 @@ Eigen::Vector3d SculptApp::mirrorCentre() const {
 }
 
 void SculptApp::toolStroke(const PointerResult& stroke, float x, float y, int width, int height) {
+  takeEyedropperResult();
   if (stroke.strokeBegan) {
     strokeTool_ = model_.tools.tool;
     strokeInverted_ = ImGui::GetIO().KeyCtrl;
@@ -103,6 +107,20 @@ void SculptApp::toolStroke(const PointerResult& stroke, float x, float y, int wi
   }
 }
 
+ToolInput SculptApp::toolInput(const glm::vec3& world, const std::optional<Eigen::Vector3d>& rest) const {
+  ToolInput input;
+  input.position = Eigen::Vector3d(world.x, world.y, world.z);
+  input.restPoint = rest;
+  if (strokeInverted_) input.modifiers |= kToolInvert;
+  return input;
+}
+
+void SculptApp::endToolStroke() {
+  if (stroke_ == 0) return;
+  controller_->loop().endStroke(stroke_, ToolInput{});
+  stroke_ = 0;
+}
+
 void SculptApp::pullStroke(const PointerResult& stroke, float x, float y, int width, int height) {
   // A stroke that starts on the surface grabs the material point under the cursor with a spring;
   // the target then follows the cursor in the view plane at the grabbed depth (with Ctrl it is
@@ -114,77 +132,78 @@ void SculptApp::pullStroke(const PointerResult& stroke, float x, float y, int wi
   const glm::vec3 direction = glm::normalize(*far - *near);
   if (stroke.strokeBegan) {
     if (const std::optional<SurfaceHit> hit = surfaceHit(x, y, cursorDepth_, width, height)) {
-      controller_->grab(hit->rest, Eigen::Vector3d(hit->world.x, hit->world.y, hit->world.z));
-      pullAnchor_ = hit->world;
+      PullStroke::Settings settings;
+      settings.keep = model_.tools.keepOnRelease;
+      stroke_ = controller_->loop().beginStroke(std::make_unique<PullStroke>(settings),
+                                                toolInput(hit->world, hit->rest));
       grabDistance_ = glm::dot(hit->world - *near, direction);
-      grabbing_ = true;
     }
-  } else if (stroke.strokeActive && grabbing_) {
-    glm::vec3 target = *near + grabDistance_ * direction;
-    if (strokeInverted_) target = 2.0f * pullAnchor_ - target;
-    controller_->moveGrab(Eigen::Vector3d(target.x, target.y, target.z));
+  } else if (stroke.strokeActive && stroke_ != 0) {
+    controller_->loop().updateStroke(stroke_, toolInput(*near + grabDistance_ * direction, std::nullopt));
   }
-  if (stroke.strokeEnded && grabbing_) {
-    controller_->releaseGrab(model_.tools.keepOnRelease);
-    grabbing_ = false;
-  }
+  if (stroke.strokeEnded) endToolStroke();
 }
 
 void SculptApp::brushStroke(const PointerResult& stroke, float x, float y, int width, int height) {
   const ToolState& t = model_.tools;
-  const auto dab = [&]() {
-    const std::optional<SurfaceHit> hit = surfaceHit(x, y, cursorDepth_, width, height);
-    if (!hit) return;
-    lastDabX_ = x, lastDabY_ = y;
-    const double radius = brushWorldRadius(x, y, cursorDepth_, width, height);
-    if (!(radius > 0.0)) return;
-    if (strokeTool_ == ToolKind::Inflate) {
-      const double pressure = (strokeInverted_ ? -1.0 : 1.0) * t.pressure * t.strength;
-      controller_->pressInflate(hit->rest, radius, pressure);
-      inflating_ = true;
-    } else if (strokeTool_ == ToolKind::Paint) {
-      controller_->paint(hit->rest, paintBrush(t, radius, mirrorCentre()));
-      pendingCapture_ = Capture::Materials;  // set now: undo waits for the stroke's entry
-      pendingLabel_ = paintLabel(t.field);
-    } else {
-      controller_->pin(hit->rest, radius, !strokeInverted_);
-      pendingCapture_ = Capture::Pins;
-      pendingLabel_ = strokeInverted_ ? "Unpin" : "Pin";
-    }
-  };
   if (stroke.strokeBegan && strokeTool_ == ToolKind::Paint && strokeInverted_) {
     // Ctrl+click with the paint brush: the eyedropper reads the painted value under the cursor.
     strokeTool_ = ToolKind::Topology;  // the rest of this stroke does nothing
     const std::optional<SurfaceHit> hit = surfaceHit(x, y, cursorDepth_, width, height);
     if (!hit) return;
-    const Project& project = document_.project();
-    const std::vector<Eigen::Vector3d> at{hit->rest};
-    const Material picked = resampleMaterials(project.materials, at, model_.settings.material).front();
-    ToolState& tools = model_.tools;
-    char text[96];
-    if (tools.field == PaintField::Youngs) tools.paint.youngs = picked.youngs;
-    if (tools.field == PaintField::Density) tools.paint.density = picked.density;
-    if (tools.field == PaintField::Damping) tools.paint.damping = picked.damping;
-    std::snprintf(text, sizeof text, "picked E %.3g Pa, density %.4g kg/m^3, damping %.3g",
-                  picked.youngs, picked.density, picked.damping);
-    model_.toast(text);
+    eyedropper_ = std::make_shared<Eyedropper::Result>();
+    const uint64_t id = controller_->loop().beginStroke(std::make_unique<Eyedropper>(eyedropper_),
+                                                        toolInput(hit->world, hit->rest));
+    controller_->loop().endStroke(id, ToolInput{});
     return;
   }
-  if (stroke.strokeBegan) {
-    dab();
-  } else if (stroke.strokeActive) {
-    const float spacing = std::max(2.0f, 0.25f * t.radiusPixels);
-    if (std::hypot(x - lastDabX_, y - lastDabY_) >= spacing) dab();
+  const std::optional<SurfaceHit> hit =
+      stroke.strokeBegan || stroke.strokeActive ? surfaceHit(x, y, cursorDepth_, width, height)
+                                                : std::nullopt;
+  if (hit) lastDabX_ = x, lastDabY_ = y;
+  if (hit && stroke_ == 0 && (stroke.strokeBegan || stroke.strokeActive)) {
+    // The stroke starts where the cursor first touches the surface.
+    const double radius = brushWorldRadius(x, y, cursorDepth_, width, height);
+    if (!(radius > 0.0)) return;
+    std::unique_ptr<Tool> tool;
+    if (strokeTool_ == ToolKind::Inflate) {
+      tool = std::make_unique<InflateStroke>(InflateStroke::Settings{radius, t.pressure * t.strength});
+    } else if (strokeTool_ == ToolKind::Paint) {
+      tool = std::make_unique<PaintStroke>(PaintStroke::Settings{paintBrush(t, radius, mirrorCentre()),
+                                                                 mirrorCentre()});
+      pendingCapture_ = Capture::Materials;  // set now: undo waits for the stroke's entry
+      pendingLabel_ = paintLabel(t.field);
+    } else {
+      tool = std::make_unique<PinStroke>(PinStroke::Settings{radius, std::nullopt});
+      pendingCapture_ = Capture::Pins;
+      pendingLabel_ = strokeInverted_ ? "Unpin" : "Pin";
+    }
+    stroke_ = controller_->loop().beginStroke(std::move(tool), toolInput(hit->world, hit->rest));
+  } else if (hit && stroke_ != 0 && stroke.strokeActive) {
+    controller_->loop().updateStroke(stroke_, toolInput(hit->world, hit->rest));
   }
   if (stroke.strokeEnded) {
-    if (strokeTool_ == ToolKind::Inflate && inflating_) {
-      controller_->releaseInflate();
-      inflating_ = false;
-    }
-    if ((strokeTool_ == ToolKind::Paint || strokeTool_ == ToolKind::Pin) &&
+    const bool began = stroke_ != 0;
+    endToolStroke();
+    if (began && (strokeTool_ == ToolKind::Paint || strokeTool_ == ToolKind::Pin) &&
         pendingCapture_ != Capture::None)
-      controller_->requestEdits();  // the stroke's undo entry is made when the state arrives
+      controller_->loop().requestEdits();  // the stroke's undo entry is made when the state arrives
   }
+}
+
+void SculptApp::takeEyedropperResult() {
+  if (!eyedropper_) return;
+  const std::optional<Material> picked = eyedropper_->take();
+  if (!picked) return;
+  eyedropper_.reset();
+  ToolState& tools = model_.tools;
+  if (tools.field == PaintField::Youngs) tools.paint.youngs = picked->youngs;
+  if (tools.field == PaintField::Density) tools.paint.density = picked->density;
+  if (tools.field == PaintField::Damping) tools.paint.damping = picked->damping;
+  char text[96];
+  std::snprintf(text, sizeof text, "picked E %.3g Pa, density %.4g kg/m^3, damping %.3g",
+                picked->youngs, picked->density, picked->damping);
+  model_.toast(text);
 }
 
 void SculptApp::curveStroke(const PointerResult& stroke, float x, float y, int width, int height) {
@@ -196,8 +215,11 @@ void SculptApp::curveStroke(const PointerResult& stroke, float x, float y, int w
                         : camera_.project(curveWorld_[curveWorld_.size() / 2], width, height).z;
       const std::optional<glm::vec3> start = camera_.unproject(x, y, curveDepth_, width, height);
       if (!start) return;
-      curveStart_ = *start;
-      controller_->grabCurve(curveRest_, model_.tools.smoothCurve);
+      CurveStroke::Settings settings;
+      settings.polyline = curveRest_;
+      settings.profile = model_.tools.smoothCurve ? CurveProfile::Smooth : CurveProfile::Rigid;
+      stroke_ = controller_->loop().beginStroke(std::make_unique<CurveStroke>(std::move(settings)),
+                                                toolInput(*start, std::nullopt));
       curveGrabbed_ = true;
       return;
     }
@@ -205,13 +227,11 @@ void SculptApp::curveStroke(const PointerResult& stroke, float x, float y, int w
     curveWorld_.clear();
   }
   if (curveGrabbed_) {
-    if (stroke.strokeActive)
-      if (const std::optional<glm::vec3> at = camera_.unproject(x, y, curveDepth_, width, height)) {
-        const glm::vec3 offset = *at - curveStart_;
-        controller_->dragCurve(Eigen::Vector3d(offset.x, offset.y, offset.z));
-      }
+    if (stroke.strokeActive && stroke_ != 0)
+      if (const std::optional<glm::vec3> at = camera_.unproject(x, y, curveDepth_, width, height))
+        controller_->loop().updateStroke(stroke_, toolInput(*at, std::nullopt));
     if (stroke.strokeEnded) {
-      controller_->releaseCurve();
+      endToolStroke();
       curveGrabbed_ = false;
     }
     return;
@@ -453,11 +473,11 @@ void SculptApp::drawToolOverlay(const ViewRect& view) {
   }
   // The force of each pull spring, at its target.
   const SceneFrame& frame = view_.frame();
-  for (size_t i = 0; i < frame.springs.size() && i < frame.springForces.size(); ++i) {
-    if (!std::isfinite(frame.springForces[i])) continue;
-    const Eigen::Vector3d& target = frame.springs[i].second;
+  for (const ToolSpring& spring : frame.springs) {
+    if (!std::isfinite(spring.force)) continue;
+    const Eigen::Vector3d& target = spring.target;
     char text[32];
-    std::snprintf(text, sizeof text, "%.3g N", frame.springForces[i]);
+    std::snprintf(text, sizeof text, "%.3g N", spring.force);
     const ImVec2 at = screen(glm::vec3(target.x(), target.y(), target.z()));
     draw->AddText(ImVec2(at.x + 8, at.y - 8), colour(255, 120, 100), text);
   }

@@ -4,8 +4,8 @@
 #include <utility>
 
 #include "edit/edit_support.h"
+#include "fem/fem_model.h"
 #include "mesh/validation.h"
-#include "sim/fem_model.h"
 
 namespace sculpt {
 namespace {

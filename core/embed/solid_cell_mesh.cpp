@@ -2,7 +2,7 @@
 
 #include <algorithm>
 
-#include "io/vtk_writer.h"
+#include "mesh/hexahedron.h"
 
 namespace sculpt {
 

@@ -7,7 +7,7 @@
 
 #include "fem/quadrature.h"
 #include "fem/trilinear_shape.h"
-#include "io/vtk_writer.h"
+#include "mesh/hexahedron.h"
 #include "subdiv/regularity.h"
 #include "subdiv/tricubic_patch.h"
 

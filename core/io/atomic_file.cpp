@@ -9,7 +9,7 @@
 #include <cstring>
 #include <system_error>
 
-#include "io/control_mesh_json.h"
+#include "io/file_error.h"
 
 namespace sculpt {
 namespace {

@@ -10,16 +10,10 @@
 #include <string>
 #include <string_view>
 
+#include "io/file_error.h"
 #include "mesh/cell_complex.h"
 
 namespace sculpt {
-
-/// A file that cannot be read or parsed. what() is one line naming the file, the element and
-/// the problem, e.g. "block.json: cell 3, face 2: vertex index -1 is negative".
-class FileError : public std::runtime_error {
- public:
-  using std::runtime_error::runtime_error;
-};
 
 /// Parses the JSON text; `sourceName` prefixes error messages. Throws FileError. Vertex indices
 /// are not range-checked here (validate() reports them with the cell index).

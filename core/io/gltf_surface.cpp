@@ -26,7 +26,7 @@
 #include <vector>
 
 #include "io/atomic_file.h"
-#include "io/control_mesh_json.h"
+#include "io/file_error.h"
 
 namespace sculpt {
 namespace {

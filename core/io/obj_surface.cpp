@@ -7,7 +7,7 @@
 #include <vector>
 
 #include "io/atomic_file.h"
-#include "io/control_mesh_json.h"
+#include "io/file_error.h"
 #include "io/number_text.h"
 
 namespace sculpt {

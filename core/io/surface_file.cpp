@@ -3,7 +3,7 @@
 #include <cctype>
 #include <string>
 
-#include "io/control_mesh_json.h"
+#include "io/file_error.h"
 #include "io/obj_surface.h"
 
 namespace sculpt {

@@ -13,7 +13,7 @@
 #include <string_view>
 #include <system_error>
 
-#include "io/control_mesh_json.h"  // FileError
+#include "io/file_error.h"
 
 namespace sculpt {
 

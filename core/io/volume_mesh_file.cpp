@@ -2,7 +2,7 @@
 
 #include <string>
 
-#include "io/control_mesh_json.h"  // FileError
+#include "io/file_error.h"
 #include "io/gmsh_mesh.h"
 #include "io/tetgen_mesh.h"
 #include "io/text_scanner.h"

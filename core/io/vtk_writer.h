@@ -11,6 +11,7 @@
 #include <string>
 
 #include "mesh/cell_complex.h"
+#include "mesh/hexahedron.h"  // vtkHexahedronOrder: the VTK_HEXAHEDRON vertex order
 #include "mesh/topology.h"
 
 namespace sculpt {
@@ -23,11 +24,6 @@ struct VtkPointVectors {
   std::string name;                ///< field name (spaces are replaced by '_')
   const Points* values = nullptr;  ///< #V by 3, one row per vertex of the complex
 };
-
-/// The vertices of hexahedral cell c in VTK order: 0-3 a face whose loop (by the right-hand rule)
-/// points into the cell, 4-7 the vertices joined to 0-3 by the remaining cell edges. Nullopt when
-/// the cell is not a hexahedron.
-std::optional<std::array<uint32_t, 8>> vtkHexahedronOrder(const Topology& topology, uint32_t c);
 
 /// The whole file as text. `complex` supplies positions, `topology` (built from it) the cells.
 /// Throws std::invalid_argument when a field has the wrong number of rows.

@@ -1,6 +1,7 @@
 #include "mesh/hexahedron.h"
 
 #include <algorithm>
+#include <vector>
 
 namespace sculpt {
 
@@ -20,6 +21,18 @@ std::optional<std::array<uint32_t, 4>> hexOppositeFace(const Topology& topology,
     if (found != 1) return std::nullopt;
   }
   return opposite;
+}
+
+std::optional<std::array<uint32_t, 8>> vtkHexahedronOrder(const Topology& topology, uint32_t c) {
+  if (!topology.isHexahedron(c)) return std::nullopt;
+  // The outward loop of the first face, reversed, is a base whose normal points into the cell.
+  const std::vector<uint32_t> loop = topology.outwardLoop(c, 0);
+  if (loop.size() != 4) return std::nullopt;
+  const std::array<uint32_t, 4> base{loop[0], loop[3], loop[2], loop[1]};
+  const auto top = hexOppositeFace(topology, c, base);
+  if (!top) return std::nullopt;
+  return std::array<uint32_t, 8>{base[0],   base[1],   base[2],   base[3],
+                                 (*top)[0], (*top)[1], (*top)[2], (*top)[3]};
 }
 
 }  // namespace sculpt

@@ -7,7 +7,7 @@
 #include <system_error>
 
 #include "io/atomic_file.h"
-#include "io/control_mesh_json.h"  // FileError
+#include "io/file_error.h"
 
 namespace sculpt {
 namespace {

@@ -10,6 +10,7 @@
 
 #include "io/atomic_file.h"
 #include "io/json_nesting.h"
+#include "util/crc32.h"
 
 namespace sculpt {
 namespace {
@@ -102,16 +103,6 @@ double getF64(const char* p) {
   double value = 0.0;
   std::memcpy(&value, &bits, sizeof value);
   return value;
-}
-
-std::array<uint32_t, 256> makeCrcTable() {
-  std::array<uint32_t, 256> table{};
-  for (uint32_t n = 0; n < 256; ++n) {
-    uint32_t c = n;
-    for (int k = 0; k < 8; ++k) c = (c & 1u) ? 0xedb88320u ^ (c >> 1) : c >> 1;
-    table[n] = c;
-  }
-  return table;
 }
 
 // ---------------------------------------------------------------------------------------------
@@ -540,13 +531,6 @@ class ProjectReader {
 };
 
 }  // namespace
-
-uint32_t crc32(std::string_view bytes) {
-  static const std::array<uint32_t, 256> table = makeCrcTable();
-  uint32_t c = 0xffffffffu;
-  for (const char ch : bytes) c = table[(c ^ static_cast<unsigned char>(ch)) & 0xffu] ^ (c >> 8);
-  return c ^ 0xffffffffu;
-}
 
 std::string serializeProject(const Project& project) {
   if (const std::string problem = projectProblem(project); !problem.empty()) {

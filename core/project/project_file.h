@@ -10,7 +10,7 @@
 #include <string>
 #include <string_view>
 
-#include "io/control_mesh_json.h"  // FileError
+#include "io/file_error.h"
 #include "project/project.h"
 
 namespace sculpt {
@@ -31,8 +31,5 @@ Project parseProject(std::string_view bytes, std::string_view sourceName);
 void saveProject(const Project& project, const std::filesystem::path& path);
 /// Reads and parses. Throws FileError.
 Project loadProject(const std::filesystem::path& path);
-
-/// CRC-32 (IEEE 802.3, as zlib's crc32) of the bytes.
-uint32_t crc32(std::string_view bytes);
 
 }  // namespace sculpt

@@ -4,8 +4,8 @@
 // trilinear hexahedron on its cell's 8 corner nodes (spectrally close: both discretise the same
 // elasticity on the same lattice). Reduced to the control points as (A x I3)^T K (A x I3).
 
+#include "fem/fem_model.h"
 #include "fem/mass_matrix.h"
-#include "sim/fem_model.h"
 
 namespace sculpt {
 

@@ -14,7 +14,7 @@
 #include <utility>
 #include <vector>
 
-#include "sim/fem_model.h"
+#include "fem/fem_model.h"
 #include "sim/form.h"
 #include "sim/material_point.h"
 

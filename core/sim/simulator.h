@@ -17,8 +17,8 @@
 #include <string>
 #include <vector>
 
+#include "fem/fem_model.h"
 #include "sim/conjugate_gradient.h"
-#include "sim/fem_model.h"
 #include "sim/form.h"
 
 namespace sculpt {

@@ -1,7 +1,7 @@
 #pragma once
 // The forms every simulation has: elasticity, inertia and damping of the implicit step, gravity.
 
-#include "sim/fem_model.h"
+#include "fem/fem_model.h"
 #include "sim/form.h"
 
 namespace sculpt {

@@ -6,7 +6,7 @@
 #include <Eigen/SparseCholesky>
 #include <vector>
 
-#include "sim/fem_model.h"
+#include "fem/fem_model.h"
 
 namespace sculpt {
 

@@ -23,8 +23,8 @@
 #include <optional>
 #include <string>
 
+#include "fem/fem_model.h"
 #include "fem/material.h"
-#include "sim/fem_model.h"
 
 namespace sculpt {
 

@@ -28,6 +28,16 @@ Eigen::Vector3d PullTool::pointPosition() const {
   return s ? s->position(springs_.simulator().positions()) : anchor_;
 }
 
+Eigen::Vector3d PullTool::pointVelocity() const {
+  const PenaltySpringForm* s = spring();
+  return s ? s->position(springs_.simulator().velocities()) : Eigen::Vector3d::Zero();
+}
+
+double PullTool::stiffness() const {
+  const PenaltySpringForm* s = spring();
+  return s ? s->stiffness() : 0.0;
+}
+
 Eigen::Vector3d PullTool::target() const {
   const PenaltySpringForm* s = spring();
   return s ? s->target() : anchor_;

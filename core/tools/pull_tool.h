@@ -39,6 +39,10 @@ class PullTool {
   size_t numKept() const { return springs_.numKept(); }
   /// Current position of the grabbed point (the anchor when not grabbing).
   Eigen::Vector3d pointPosition() const;
+  /// Velocity of the grabbed point (m/s); zero when not grabbing.
+  Eigen::Vector3d pointVelocity() const;
+  /// The spring's stiffness (N/m); 0 when not grabbing.
+  double stiffness() const;
   /// The spring's target (m); the anchor when not grabbing.
   Eigen::Vector3d target() const;
   /// Position of the grabbed point at grab time.

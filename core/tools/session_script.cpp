@@ -10,7 +10,7 @@
 #include <sstream>
 #include <stdexcept>
 
-#include "io/control_mesh_json.h"
+#include "io/file_error.h"
 #include "io/json_nesting.h"
 #include "sim/material_point.h"
 #include "tools/pin_tool.h"
@@ -426,14 +426,18 @@ SessionScript loadSessionScript(const std::filesystem::path& path) {
 
 // ---------------------------------------------------------------------------------------------
 
-ScriptPlayer::ScriptPlayer(Simulator& simulator, SessionScript script)
+ScriptPlayer::ScriptPlayer(Simulator& simulator, SessionScript script, ToolContext* context)
     : simulator_(simulator), script_(std::move(script)), runners_(script_.events.size()) {
+  if (!context) {
+    ownContext_ = std::make_unique<SimulatorToolContext>(simulator_);
+    context = ownContext_.get();
+  }
+  context_ = context;
   order_.resize(script_.events.size());
   std::iota(order_.begin(), order_.end(), size_t(0));
   std::stable_sort(order_.begin(), order_.end(), [&](size_t a, size_t b) {
     return script_.events[a].time < script_.events[b].time;
   });
-  std::optional<MaterialPointLocator> locator;
   for (size_t i = 0; i < script_.events.size(); ++i) {
     if (std::holds_alternative<TopologyEvent>(script_.events[i].action))
       throw std::invalid_argument(
@@ -443,18 +447,18 @@ ScriptPlayer::ScriptPlayer(Simulator& simulator, SessionScript script)
     const auto* grab = std::get_if<GrabEvent>(&script_.events[i].action);
     const auto* curve = std::get_if<CurveEvent>(&script_.events[i].action);
     if (!grab && !curve) continue;
-    if (!locator) locator.emplace(simulator_.model().mesh());
+    const MaterialPointLocator& locator = context_->locator();
     if (curve) {
       try {
         runners_[i].curve =
-            sampleCurve(simulator_.model(), *locator, curve->points, curve->samples);
+            sampleCurve(simulator_.model(), locator, curve->points, curve->samples);
       } catch (const std::invalid_argument& e) {
         throw std::invalid_argument("events[" + std::to_string(script_.events[i].index) +
                                     "] (curve): " + e.what());
       }
       continue;
     }
-    runners_[i].point = locator->locate(grab->point);
+    runners_[i].point = locator.locate(grab->point);
     if (!runners_[i].point)
       throw std::invalid_argument("events[" + std::to_string(script_.events[i].index) +
                                   "] (grab): the point cannot be located in the solid.");
@@ -468,11 +472,20 @@ std::optional<MaterialPoint> ScriptPlayer::grabPoint(size_t index) const {
 }
 
 const PullTool* ScriptPlayer::pullTool(size_t index) const {
-  return index < runners_.size() ? runners_[index].pull.get() : nullptr;
+  if (index >= runners_.size()) return nullptr;
+  const auto* stroke = dynamic_cast<const PullStroke*>(runners_[index].tool.get());
+  return stroke ? stroke->pull() : nullptr;
 }
 
 const CurveTool* ScriptPlayer::curveTool(size_t index) const {
-  return index < runners_.size() ? runners_[index].curveTool.get() : nullptr;
+  if (index >= runners_.size()) return nullptr;
+  const auto* stroke = dynamic_cast<const CurveStroke*>(runners_[index].tool.get());
+  return stroke ? stroke->curve() : nullptr;
+}
+
+void ScriptPlayer::springs(std::vector<ToolSpring>& out) const {
+  for (const Runner& runner : runners_)
+    if (runner.tool && runner.phase == Phase::Active) runner.tool->springs(simulator_, out);
 }
 
 std::vector<std::string> ScriptPlayer::takeLog() { return std::exchange(log_, {}); }
@@ -482,58 +495,61 @@ void ScriptPlayer::start(size_t i) {
   Runner& runner = runners_[i];
   const std::string name =
       "t=" + number(time_) + " s: events[" + std::to_string(event.index) + "] " + event.typeName();
+  // Each event is a stroke of the tool it names, driven like any other input (tools/tool.h).
+  ToolInput input;
   try {
     if (const auto* grab = std::get_if<GrabEvent>(&event.action)) {
-      runner.pull = std::make_unique<PullTool>(simulator_);
-      runner.pull->grab(*runner.point, grab->targetAt(time_ - event.time), grab->stiffness,
-                        grab->push);
+      runner.tool = std::make_unique<PullStroke>(
+          PullStroke::Settings{grab->stiffness, grab->keep, runner.point});
+      input.position = grab->targetAt(time_ - event.time);
+      if (grab->push) input.modifiers |= kToolInvert;
+      runner.tool->begin(*context_, input);
       log_.push_back(name + " started");
     } else if (const auto* curve = std::get_if<CurveEvent>(&event.action)) {
-      runner.curveTool = std::make_unique<CurveTool>(simulator_);
-      runner.curveTool->grab(runner.curve, curve->profile, curve->stiffness);
-      runner.curveTool->drag(curve->offsetAt(time_ - event.time));
+      CurveStroke::Settings settings;
+      settings.profile = curve->profile;
+      settings.stiffness = curve->stiffness;
+      settings.keep = curve->keep;
+      settings.sampled = runner.curve;
+      settings.dragOrigin = Eigen::Vector3d::Zero();
+      runner.tool = std::make_unique<CurveStroke>(std::move(settings));
+      input.position = curve->offsetAt(time_ - event.time);
+      runner.tool->begin(*context_, input);
       log_.push_back(name + " started (" + std::to_string(runner.curve.size()) + " points)");
     } else if (const auto* inflate = std::get_if<InflateEvent>(&event.action)) {
-      runner.inflate = std::make_unique<InflateTool>(simulator_);
-      runner.inflate->press(inflate->centre, inflate->radius, inflate->pressure);
-      log_.push_back(name + " started (" + std::to_string(runner.inflate->numTriangles()) +
+      auto stroke = std::make_unique<InflateStroke>(
+          InflateStroke::Settings{inflate->radius, inflate->pressure});
+      input.restPoint = inflate->centre;
+      stroke->begin(*context_, input);
+      log_.push_back(name + " started (" + std::to_string(stroke->inflate()->numTriangles()) +
                      " triangles)");
+      runner.tool = std::move(stroke);
     } else if (const auto* paint = std::get_if<PaintEvent>(&event.action)) {
-      MaterialBrushSettings brush = paint->brush;
-      if (paint->mirrorCentre) {
-        brush.mirror.centre = *paint->mirrorCentre;
-      } else {
-        const Points& rest = simulator_.model().restControl();
-        brush.mirror.centre =
-            0.5 * (rest.colwise().minCoeff() + rest.colwise().maxCoeff()).transpose();
-      }
-      const long touched = paintDab(simulator_.model(), paint->centre, brush);
-      log_.push_back(name + ": " + std::to_string(touched) + " samples painted");
+      PaintStroke stroke(PaintStroke::Settings{paint->brush, paint->mirrorCentre});
+      input.restPoint = paint->centre;
+      stroke.begin(*context_, input);
+      stroke.end(*context_, input);
+      log_.push_back(name + ": " + std::to_string(stroke.samplesPainted()) + " samples painted");
     } else if (const auto* pin = std::get_if<PinEvent>(&event.action)) {
-      const uint32_t n = pin->box ? pinInBox(simulator_, *pin->box, !pin->unpin)
-                                  : pinInSphere(simulator_, pin->centre, pin->radius, !pin->unpin);
-      log_.push_back(name + ": " + std::to_string(n) + " control points " +
+      PinStroke stroke(PinStroke::Settings{pin->radius, pin->box});
+      input.restPoint = pin->centre;
+      if (pin->unpin) input.modifiers |= kToolInvert;
+      stroke.begin(*context_, input);
+      stroke.end(*context_, input);
+      log_.push_back(name + ": " + std::to_string(stroke.pointsTouched()) + " control points " +
                      (pin->unpin ? "unpinned" : "pinned"));
     }
   } catch (const std::invalid_argument& e) {
     throw std::invalid_argument("events[" + std::to_string(event.index) + "] (" + event.typeName() +
                                 "): " + e.what());
   }
-  runner.phase = (runner.pull || runner.curveTool || runner.inflate) ? Phase::Active : Phase::Done;
+  runner.phase = runner.tool ? Phase::Active : Phase::Done;
 }
 
 void ScriptPlayer::finish(size_t i) {
   Runner& runner = runners_[i];
   const ScriptEvent& event = script_.events[i];
-  if (runner.pull) {
-    const auto* grab = std::get_if<GrabEvent>(&event.action);
-    runner.pull->release(grab->keep ? ReleaseMode::Keep : ReleaseMode::LetGo);
-  }
-  if (runner.curveTool) {
-    const auto* curve = std::get_if<CurveEvent>(&event.action);
-    runner.curveTool->release(curve->keep ? ReleaseMode::Keep : ReleaseMode::LetGo);
-  }
-  if (runner.inflate) runner.inflate->release();
+  if (runner.tool) runner.tool->end(*context_, ToolInput{});
   runner.phase = Phase::Done;
   log_.push_back("t=" + number(time_) + " s: events[" + std::to_string(event.index) + "] " +
                  event.typeName() + " ended");
@@ -552,10 +568,11 @@ StepReport ScriptPlayer::step() {
     const bool held = (grab && !grab->release) || (curve && !curve->release);
     if (!held && event.endTime() <= due) {
       finish(i);
-    } else if (grab) {
-      runner.pull->moveTarget(grab->targetAt(time_ + h - event.time));
-    } else if (curve) {
-      runner.curveTool->drag(curve->offsetAt(time_ + h - event.time));
+    } else if (grab || curve) {
+      ToolInput input;
+      input.position = grab ? grab->targetAt(time_ + h - event.time)
+                            : curve->offsetAt(time_ + h - event.time);
+      runner.tool->update(*context_, input);
     }
   }
   const StepReport report = simulator_.step();

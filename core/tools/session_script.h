@@ -25,6 +25,8 @@
 #include "tools/inflate_tool.h"
 #include "tools/material_brush.h"
 #include "tools/pull_tool.h"
+#include "tools/strokes.h"
+#include "tools/tool.h"
 
 namespace sculpt {
 
@@ -124,7 +126,9 @@ class ScriptPlayer {
   /// elements) or a curve has too many samples, and for a topology event (those edit the mesh
   /// the model is built from: apply them first, see tools/script_topology.h). Events are named
   /// by their index in the file (ScriptEvent::index).
-  ScriptPlayer(Simulator& simulator, SessionScript script);
+  /// Every event is a stroke of its tool (tools/strokes.h) through `context` (none: a context
+  /// over the bare simulator; the running scene passes its own).
+  ScriptPlayer(Simulator& simulator, SessionScript script, ToolContext* context = nullptr);
   ~ScriptPlayer();
   ScriptPlayer(const ScriptPlayer&) = delete;
   ScriptPlayer& operator=(const ScriptPlayer&) = delete;
@@ -142,6 +146,8 @@ class ScriptPlayer {
   const PullTool* pullTool(size_t index) const;
   /// The curve tool of events[index] (nullptr for other events or before it starts).
   const CurveTool* curveTool(size_t index) const;
+  /// Appends the springs of the strokes acting now.
+  void springs(std::vector<ToolSpring>& out) const;
   /// Lines about events started and ended since the last call ("t=0.5 s: events[1] inflate
   /// started ..."), for a command-line log.
   std::vector<std::string> takeLog();
@@ -153,13 +159,14 @@ class ScriptPlayer {
     std::optional<MaterialPoint> point;
     std::unique_ptr<PullTool> pull;
     std::vector<CurveSample> curve;
-    std::unique_ptr<CurveTool> curveTool;
-    std::unique_ptr<InflateTool> inflate;
+    std::unique_ptr<Tool> tool;  // the event's stroke; kept after it ends while it holds loads
   };
   void start(size_t i);
   void finish(size_t i);
 
   Simulator& simulator_;
+  std::unique_ptr<SimulatorToolContext> ownContext_;
+  ToolContext* context_ = nullptr;
   SessionScript script_;
   std::vector<size_t> order_;  // event indices by (time, index)
   std::vector<Runner> runners_;

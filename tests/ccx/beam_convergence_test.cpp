@@ -31,9 +31,9 @@
 #include <string>
 #include <vector>
 
+#include "fem/fem_model.h"
 #include "mesh/cell_complex.h"
 #include "mesh/validation.h"
-#include "sim/fem_model.h"
 #include "sim/simulator.h"
 #include "sim/standard_forms.h"
 #include "support/calculix.h"

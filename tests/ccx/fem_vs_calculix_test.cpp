@@ -34,10 +34,10 @@
 #include <utility>
 #include <vector>
 
+#include "fem/fem_model.h"
 #include "mesh/cell_complex.h"
 #include "mesh/standard_cell.h"
 #include "mesh/validation.h"
-#include "sim/fem_model.h"
 #include "sim/simulator.h"
 #include "sim/standard_forms.h"
 #include "support/calculix.h"

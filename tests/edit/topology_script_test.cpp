@@ -7,7 +7,7 @@
 #include <stdexcept>
 #include <string>
 
-#include "io/control_mesh_json.h"
+#include "io/file_error.h"
 #include "support/edit_fixtures.h"
 #include "tools/script_topology.h"
 #include "tools/session_script.h"

@@ -13,8 +13,8 @@
 #include <string>
 
 #include "fem/fem_mesh.h"
+#include "fem/fem_model.h"
 #include "io/control_mesh_json.h"
-#include "sim/fem_model.h"
 #include "subdiv/regularity.h"
 #include "support/mesh_builders.h"
 

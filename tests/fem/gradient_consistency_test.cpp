@@ -14,7 +14,7 @@
 #include <string>
 
 #include "fem/elastic_kernel.h"
-#include "sim/fem_model.h"
+#include "fem/fem_model.h"
 #include "support/fem_builders.h"
 #include "support/mesh_builders.h"
 

@@ -13,8 +13,8 @@
 #include <string>
 #include <vector>
 
+#include "fem/fem_model.h"
 #include "fem/mass_matrix.h"
-#include "sim/fem_model.h"
 #include "support/mesh_builders.h"
 
 namespace sculpt {

@@ -6,7 +6,7 @@
 #include <random>
 #include <string>
 
-#include "sim/fem_model.h"
+#include "fem/fem_model.h"
 #include "sim/linear_stiffness.h"
 #include "support/fem_builders.h"
 #include "support/mesh_builders.h"

@@ -12,7 +12,7 @@
 #include <string>
 #include <vector>
 
-#include "sim/fem_model.h"
+#include "fem/fem_model.h"
 #include "support/mesh_builders.h"
 
 namespace sculpt {

@@ -21,8 +21,8 @@
 
 #include "fem/elastic_kernel.h"
 #include "fem/fem_mesh.h"
+#include "fem/fem_model.h"
 #include "fem/material.h"
-#include "sim/fem_model.h"
 #include "support/mesh_builders.h"
 
 namespace sculpt {

@@ -22,7 +22,7 @@
 #include <vector>
 
 #include "fem/elastic_kernel.h"
-#include "sim/fem_model.h"
+#include "fem/fem_model.h"
 #include "support/mesh_builders.h"
 
 namespace sculpt {

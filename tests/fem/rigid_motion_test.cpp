@@ -15,7 +15,7 @@
 
 #include "fem/elastic_kernel.h"
 #include "fem/fem_mesh.h"
-#include "sim/fem_model.h"
+#include "fem/fem_model.h"
 #include "support/mesh_builders.h"
 
 namespace sculpt {

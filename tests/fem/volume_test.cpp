@@ -11,7 +11,7 @@
 #include <string>
 
 #include "fem/fem_mesh.h"
-#include "sim/fem_model.h"
+#include "fem/fem_model.h"
 #include "support/mesh_builders.h"
 
 namespace sculpt {

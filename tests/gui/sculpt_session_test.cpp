@@ -155,7 +155,8 @@ TEST_F(SculptSession, PullPaintAStiffEarExtrudeAndUndo) {
   drag(grabAt, 220.0f, 40.0f, 16);
   frames(30, "sculpt-pull.png");
   ASSERT_EQ(app_->sceneView().frame().springs.size(), 1u);
-  const auto& [point, target] = app_->sceneView().frame().springs.front();
+  const Eigen::Vector3d point = app_->sceneView().frame().springs.front().point;
+  const Eigen::Vector3d target = app_->sceneView().frame().springs.front().target;
   const ImVec2 pointOnScreen = screen(point);
   EXPECT_GT(pointOnScreen.x - grabAt.x, 20.0f) << "the grabbed point follows the cursor";
   EXPECT_LT((point - target).norm(), (screen(target).x - grabAt.x) * 1.0)

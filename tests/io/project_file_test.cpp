@@ -20,6 +20,7 @@
 
 #include "io/atomic_file.h"
 #include "support/fem_builders.h"
+#include "util/crc32.h"
 
 namespace sculpt::test {
 

@@ -21,7 +21,7 @@
 #include <vector>
 
 #include "io/atomic_file.h"
-#include "io/control_mesh_json.h"
+#include "io/file_error.h"
 #include "io/gltf_surface.h"
 #include "io/obj_surface.h"
 #include "io/surface_file.h"

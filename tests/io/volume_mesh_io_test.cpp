@@ -21,7 +21,7 @@
 #include <utility>
 #include <vector>
 
-#include "io/control_mesh_json.h"  // FileError
+#include "io/file_error.h"
 #include "io/gmsh_mesh.h"
 #include "io/tetgen_mesh.h"
 #include "io/volume_mesh_file.h"

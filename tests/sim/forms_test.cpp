@@ -14,8 +14,8 @@
 #include <string>
 #include <vector>
 
+#include "fem/fem_model.h"
 #include "io/control_mesh_json.h"
-#include "sim/fem_model.h"
 #include "sim/load_forms.h"
 #include "sim/material_point.h"
 #include "sim/standard_forms.h"

@@ -12,8 +12,8 @@
 #include <random>
 #include <string>
 
+#include "fem/fem_model.h"
 #include "io/control_mesh_json.h"
-#include "sim/fem_model.h"
 #include "sim/material_point.h"
 #include "subdiv/tricubic_patch.h"
 #include "support/fem_builders.h"

@@ -6,7 +6,7 @@
 
 #include <string>
 
-#include "io/control_mesh_json.h"
+#include "io/file_error.h"
 #include "tools/session_script.h"
 
 namespace sculpt {

@@ -15,7 +15,7 @@
 #include <string>
 #include <vector>
 
-#include "io/control_mesh_json.h"
+#include "io/file_error.h"
 #include "sim/standard_forms.h"
 #include "support/tool_scene.h"
 #include "tools/curve_tool.h"

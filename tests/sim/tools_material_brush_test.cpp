@@ -11,7 +11,7 @@
 #include <string>
 #include <vector>
 
-#include "sim/fem_model.h"
+#include "fem/fem_model.h"
 #include "sim/simulator.h"
 #include "support/fem_builders.h"
 #include "tools/material_brush.h"

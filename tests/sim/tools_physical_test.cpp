@@ -11,7 +11,7 @@
 #include <memory>
 #include <string>
 
-#include "sim/fem_model.h"
+#include "fem/fem_model.h"
 #include "sim/load_forms.h"
 #include "sim/material_point.h"
 #include "sim/simulator.h"

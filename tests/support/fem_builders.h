@@ -9,8 +9,8 @@
 #include <random>
 #include <string>
 
+#include "fem/fem_model.h"
 #include "io/control_mesh_json.h"
-#include "sim/fem_model.h"
 
 namespace sculpt::test {
 

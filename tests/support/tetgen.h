@@ -31,7 +31,7 @@
 #include <utility>
 #include <vector>
 
-#include "io/control_mesh_json.h"  // FileError
+#include "io/file_error.h"
 #include "io/tetgen_mesh.h"
 #include "mesh/volume_mesh.h"
 

@@ -8,7 +8,7 @@
 
 #include <memory>
 
-#include "sim/fem_model.h"
+#include "fem/fem_model.h"
 #include "sim/material_point.h"
 #include "sim/simulator.h"
 #include "support/fem_builders.h"

@@ -36,7 +36,7 @@
 #include "sim/simulator.h"
 #include "util/progress.h"
 
-namespace sculpt::app {
+namespace sculpt {
 
 enum class SceneKind { DefaultBunny, ImportedSurface, ControlMesh };
 
@@ -135,4 +135,4 @@ std::optional<SceneBuildPhase1> buildSceneGeometry(const SceneSource& source,
                                                    const SceneSettings& settings, uint64_t sceneId,
                                                    ProgressReporter* progress = nullptr);
 
-}  // namespace sculpt::app
+}  // namespace sculpt

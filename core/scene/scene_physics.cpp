@@ -1,4 +1,4 @@
-#include "sculpt/scene_physics.h"
+#include "scene/scene_physics.h"
 
 #include "sim/material_point.h"
 
@@ -7,11 +7,11 @@
 #include <limits>
 #include <stdexcept>
 
-#include "sculpt/build_progress.h"
+#include "scene/build_progress.h"
 #include "sim/standard_forms.h"
 #include "tools/pin_tool.h"
 
-namespace sculpt::app {
+namespace sculpt {
 namespace {
 
 // Per cellMesh cell, the value of its element.
@@ -129,55 +129,57 @@ StepReport ScenePhysics::step() {
   return lastStep_;
 }
 
-bool ScenePhysics::grab(const Eigen::Vector3d& rest, const Eigen::Vector3d& target) {
-  const std::optional<MaterialPoint> point = locateMaterialPoint(model_->mesh(), rest);
-  if (!point) return false;
-  if (!pull_) pull_ = std::make_unique<PullTool>(*simulator_);
-  pull_->grab(*point, target);
-  return true;
+// ---------------------------------------------------------------------------------------------
+// Strokes
+
+void ScenePhysics::beginStroke(uint64_t id, std::unique_ptr<Tool> tool, const ToolInput& input) {
+  tool->begin(*this, input);
+  strokes_.emplace_back(id, std::move(tool));
 }
 
-void ScenePhysics::moveGrab(const Eigen::Vector3d& target) {
-  if (pull_ && pull_->active()) pull_->moveTarget(target);
+void ScenePhysics::updateStroke(uint64_t id, const ToolInput& input) {
+  for (auto& [strokeId, tool] : strokes_)
+    if (strokeId == id) tool->update(*this, input);
 }
 
-void ScenePhysics::releaseGrab(bool keep) {
-  if (pull_ && pull_->active()) pull_->release(keep ? ReleaseMode::Keep : ReleaseMode::LetGo);
-}
-
-long ScenePhysics::paint(const Eigen::Vector3d& centre, const MaterialBrushSettings& brush) {
-  const long touched = paintDab(*model_, centre, brush);
-  if (touched > 0) {
-    updateMaterialFields();
-    updateState();
+void ScenePhysics::endStroke(uint64_t id, const ToolInput& input) {
+  for (auto it = strokes_.begin(); it != strokes_.end(); ++it) {
+    if (it->first != id) continue;
+    std::unique_ptr<Tool> tool = std::move(it->second);
+    strokes_.erase(it);
+    tool->end(*this, input);
+    if (tool->holdsLoads()) retained_.emplace_back(id, std::move(tool));
+    return;
   }
-  return touched;
 }
 
-uint32_t ScenePhysics::pin(const Eigen::Vector3d& centre, double radius, bool pin) {
-  return pinInSphere(*simulator_, centre, radius, pin);
+void ScenePhysics::strokeSprings(std::vector<std::pair<uint64_t, ToolSpring>>& out) const {
+  std::vector<ToolSpring> springs;
+  for (const auto& [id, tool] : strokes_) {
+    springs.clear();
+    tool->springs(*simulator_, springs);
+    for (const ToolSpring& spring : springs) out.emplace_back(id, spring);
+  }
+  if (player_) {
+    springs.clear();
+    player_->springs(springs);
+    for (const ToolSpring& spring : springs) out.emplace_back(0, spring);
+  }
 }
 
-void ScenePhysics::pressInflate(const Eigen::Vector3d& centre, double radius, double pressure) {
-  if (!inflate_) inflate_ = std::make_unique<InflateTool>(*simulator_);
-  inflate_->press(centre, radius, pressure);
+const MaterialPointLocator& ScenePhysics::locator() {
+  if (!locator_) locator_.emplace(model_->mesh());
+  return *locator_;
 }
 
-void ScenePhysics::releaseInflate() {
-  if (inflate_) inflate_->release();
+std::optional<Eigen::Vector3d> ScenePhysics::restPointAt(const Eigen::Vector3d& world) {
+  if (!picker_) picker_ = std::make_unique<MaterialPicker>(geometry_->cellMesh, nodes_);
+  return picker_->restPoint(world, 0.5 * solid_->cellSize);
 }
 
-void ScenePhysics::grabCurve(const std::vector<Eigen::Vector3d>& polyline, bool smooth) {
-  if (!curve_) curve_ = std::make_unique<CurveTool>(*simulator_);
-  curve_->grab(polyline, smooth ? CurveProfile::Smooth : CurveProfile::Rigid);
-}
-
-void ScenePhysics::dragCurve(const Eigen::Vector3d& offset) {
-  if (curve_ && curve_->active()) curve_->drag(offset);
-}
-
-void ScenePhysics::releaseCurve() {
-  if (curve_ && curve_->active()) curve_->release();
+void ScenePhysics::materialsChanged() {
+  updateMaterialFields();
+  updateState();
 }
 
 MaterialSamples ScenePhysics::captureMaterialSamples() const {
@@ -215,15 +217,15 @@ std::string ScenePhysics::restoreEdits(const MaterialSamples& samples,
 
 void ScenePhysics::playScript(const SessionScript& script) {
   player_.reset();  // the loads of a script in progress go first
-  player_ = std::make_unique<ScriptPlayer>(*simulator_, script);
+  player_ = std::make_unique<ScriptPlayer>(*simulator_, script, static_cast<ToolContext*>(this));
 }
 
 void ScenePhysics::reset() {
   player_.reset();  // its loads go with it
-  releaseGrab();
-  if (pull_) pull_->clearKept();
-  releaseInflate();
-  releaseCurve();
+  for (auto* strokes : {&strokes_, &retained_}) {
+    for (auto& stroke : *strokes) stroke.second->clear();
+    strokes->clear();
+  }
   const Points zero = Points::Zero(model_->numControlPoints(), 3);
   simulator_->setState(model_->restControl(), zero);
   timeOrigin_ = simulator_->time();
@@ -286,6 +288,7 @@ void ScenePhysics::updateState() {
   const uint32_t vertices = solid_->centres.numVertices;
   nodes_ = g.cellMesh.positions + solid_->centres.nodePositions(displacement.topRows(vertices));
   applyNodeGradientStencil(solid_->stencil, nodes_, gradients_);
+  picker_.reset();
   // Strain energy density with the rotations of this state (as Simulator::elasticEnergy).
   ElasticKernel& elastic = model_->elastic();
   elastic.updateRotations(femNodes_);
@@ -310,25 +313,9 @@ void ScenePhysics::fillFrame(SceneFrame& frame) const {
   frame.lastStep = lastStep_;
   frame.physicsReady = true;
   frame.springs.clear();
-  frame.springForces.clear();
-  const auto addPull = [&frame](const PullTool& pull) {
-    frame.springs.emplace_back(pull.pointPosition(), pull.target());
-    frame.springForces.push_back(pull.springForce());
-  };
-  if (pull_ && pull_->active()) addPull(*pull_);
-  const auto addCurve = [&frame](const CurveTool& curve) {  // drawn, not labelled
-    const std::vector<Eigen::Vector3d> points = curve.pointPositions(), targets = curve.targets();
-    for (size_t i = 0; i < points.size() && i < targets.size(); ++i) {
-      frame.springs.emplace_back(points[i], targets[i]);
-      frame.springForces.push_back(std::numeric_limits<double>::quiet_NaN());
-    }
-  };
-  if (curve_ && curve_->active()) addCurve(*curve_);
-  if (player_)
-    for (size_t i = 0; i < player_->script().events.size(); ++i) {
-      if (const PullTool* pull = player_->pullTool(i); pull && pull->active()) addPull(*pull);
-      if (const CurveTool* curve = player_->curveTool(i); curve && curve->active()) addCurve(*curve);
-    }
+  std::vector<std::pair<uint64_t, ToolSpring>> springs;
+  strokeSprings(springs);
+  for (const auto& spring : springs) frame.springs.push_back(spring.second);
 }
 
-}  // namespace sculpt::app
+}  // namespace sculpt

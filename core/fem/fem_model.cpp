@@ -1,4 +1,4 @@
-#include "sim/fem_model.h"
+#include "fem/fem_model.h"
 
 #include <algorithm>
 #include <cmath>

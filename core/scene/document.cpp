@@ -1,10 +1,10 @@
-#include "sculpt/document.h"
+#include "scene/document.h"
 
 #include <stdexcept>
 
 #include "project/project_file.h"
 
-namespace sculpt::app {
+namespace sculpt {
 
 std::string documentName(const std::filesystem::path& path) {
   return path.empty() ? std::string("untitled") : path.filename().string();
@@ -93,4 +93,4 @@ std::string Document::tick() {
   return {};
 }
 
-}  // namespace sculpt::app
+}  // namespace sculpt

@@ -1,7 +1,7 @@
 #pragma once
-// The window's scene and its simulation: builds scenes (scene_builder.h, scene_physics.h) on a
-// builder thread with progress and Cancel, and steps the current one on a simulation thread at
-// up to 60 steps per second, so that drawing never waits for either.
+// A scene's life: builds scenes (scene_builder.h, scene_physics.h) on a builder thread with
+// progress and Cancel, and runs the current one in a SimulationLoop (simulation_loop.h), so that
+// drawing never waits for either. The window, the command line and the tests use it alike.
 //
 // Threads (threaded mode). The caller (the UI) only ever takes short locks: to queue commands
 // and settings, to read the build status, and to copy the latest published frame.
@@ -12,10 +12,9 @@
 //    are done, and the new geometry and simulation replace it together. A second load() or
 //    cancelBuild() cancels the build in flight; a cancelled or failed build leaves the current
 //    scene untouched.
-//  - Simulation: owns the running ScenePhysics; between steps it takes a newly built one,
-//    applies queued settings, reset and single steps, then publishes a frame (double-buffered:
-//    filled outside the lock, swapped in under it). Frames of a replaced scene are never
-//    published after its successor's geometry.
+//  - Simulation: the loop's thread owns the running ScenePhysics and takes a newly built one at
+//    a step boundary. Frames of a replaced scene are never published after its successor's
+//    geometry.
 // Non-threaded mode (headless rendering, tests): nothing runs until advance(), which runs a
 // queued build to completion and then does what one simulation iteration would do.
 
@@ -29,11 +28,12 @@
 #include <string>
 #include <thread>
 
-#include "sculpt/scene_builder.h"
-#include "sculpt/scene_physics.h"
+#include "scene/scene_builder.h"
+#include "scene/scene_physics.h"
+#include "scene/simulation_loop.h"
 #include "util/progress.h"
 
-namespace sculpt::app {
+namespace sculpt {
 
 struct BuildStatus {
   bool running = false;    ///< a build is queued or in progress
@@ -75,43 +75,11 @@ class SceneController {
   /// Copies the latest published frame into `frame` when it is newer than frame.version.
   bool fetchNewer(SceneFrame& frame);
 
-  void setPlaying(bool playing);
-  bool playing() const;
-  /// One step while paused (or an extra one while playing).
-  void stepOnce();
-  /// Back to rest: rest positions, zero velocity, time 0 (a script being replayed ends).
-  void reset();
-  /// The window's pull tool, applied on the simulation thread before its next step: grab the
-  /// material point at rest position `rest` towards `target`, move the target, let go.
-  void grab(const Eigen::Vector3d& rest, const Eigen::Vector3d& target);
-  void moveGrab(const Eigen::Vector3d& target);
-  void releaseGrab(bool keep = false);  ///< keep: the spring stays (PullTool ReleaseMode::Keep)
-  /// Edits of the user's work with the window's brushes, applied on the simulation thread in the
-  /// order given before its next step (scene_physics.h): a material dab, a pin or unpin dab, the
-  /// inflate brush pressed (or moved) and released.
-  void paint(const Eigen::Vector3d& centre, const MaterialBrushSettings& brush);
-  void pin(const Eigen::Vector3d& centre, double radius, bool pin);
-  void pressInflate(const Eigen::Vector3d& centre, double radius, double pressure);
-  void releaseInflate();
-  /// The curve tool (scene_physics.h), on the simulation thread like the brushes.
-  void grabCurve(std::vector<Eigen::Vector3d> polyline, bool smooth);
-  void dragCurve(const Eigen::Vector3d& offset);
-  void releaseCurve();
-  /// Undo/redo of materials and pins on the running scene (empty samples: the uniform material
-  /// of the settings). A failure lands in buildStatus().error.
-  void restoreEdits(MaterialSamples samples, std::vector<uint32_t> pins);
-  /// Asks the simulation for the edited state of the scene running now (after the edits queued
-  /// before this call); takeEdits() gives it once captured (in non-threaded mode after advance()).
-  void requestEdits();
-  struct Edits {
-    uint64_t sceneId = 0;
-    MaterialSamples materials;
-    std::vector<uint32_t> pins;
-  };
-  std::optional<Edits> takeEdits();
-  /// Replays a session script on the current scene from its next step (once its physics is
-  /// ready); an error (a grab point outside the solid) lands in buildStatus().error.
-  void playScript(SessionScript script);
+  /// The running simulation: play, pause, step, reset, tool strokes, edits, scripts, step
+  /// observers and probes (simulation_loop.h).
+  SimulationLoop& loop() { return loop_; }
+  const SimulationLoop& loop() const { return loop_; }
+
   /// Level, cage or render level changes (against settings()) rebuild the scene of source()
   /// with load(); the rest applies live. Throws std::invalid_argument for invalid settings.
   void applySettings(const SceneSettings& settings);
@@ -147,16 +115,13 @@ class SceneController {
   std::optional<Phase2> runPhase1(const Job& job);  // nullopt: failed or cancelled
   void runPhase2(const Phase2& work);
   void finishJob(const Job& job, const std::string& error, const StageTimes* times);
-  void publishLocked(SceneFrame& frame);  // swaps `frame` in as the latest; mutex_ held
-  void queuePhysicsCommand(std::function<std::string(ScenePhysics&)> command);
-  bool simulationIteration();             // returns whether it published
   void builderLoop();
-  void simulationLoop();
 
   const bool threaded_;
+  SimulationLoop loop_;
 
   mutable std::mutex mutex_;
-  std::condition_variable builderWake_, simulationWake_;
+  std::condition_variable builderWake_;
   std::atomic<bool> stop_{false};
   // Builds (under mutex_)
   std::optional<Job> pendingJob_;
@@ -165,38 +130,15 @@ class SceneController {
   BuildStatus status_;
   ProgressCallback observer_;
   std::function<void()> notifier_;
-  // Hand-over and frames (under mutex_)
   std::shared_ptr<const SceneGeometry> newGeometry_;
-  std::unique_ptr<ScenePhysics> readyPhysics_;
-  uint64_t currentScene_ = 0;    // the scene whose frames are published
+  uint64_t currentScene_ = 0;    // the scene shown
   SceneSource currentSource_;    // and what it was built from
   SceneSettings currentSettings_;
-  bool simulationExists_ = false;  // currentScene_ has a physics (ready or running)
-  SceneFrame published_;
-  uint64_t version_ = 0;
-  // Commands (under mutex_)
-  bool playing_ = true;
-  int stepRequests_ = 0;
-  bool resetRequested_ = false;
-  std::optional<SessionScript> pendingScript_;
-  struct GrabCommand {
-    enum Kind { Grab, Move, Release } kind;
-    Eigen::Vector3d rest, target;
-    bool keep = false;
-  };
-  std::vector<GrabCommand> grabCommands_;
-  /// Brush and undo edits for the simulation thread; each returns a problem sentence or "".
-  std::vector<std::function<std::string(ScenePhysics&)>> physicsCommands_;
-  std::optional<Edits> capturedEdits_;
   SceneSettings live_;  // the caller's latest settings
-  uint64_t liveVersion_ = 0;
-  // Simulation thread only (or the caller's in non-threaded mode)
-  std::unique_ptr<ScenePhysics> physics_;
-  uint64_t appliedLiveVersion_ = 0;
-  SceneFrame back_;
+  // Builder thread only (or the caller's in non-threaded mode)
   std::optional<Phase2> deferred_;  // non-threaded: phase 2 left for the next advance()
 
-  std::thread builder_, simulation_;  // last: they start after everything they use exists
+  std::thread builder_;  // last: it starts after everything it uses exists
 };
 
-}  // namespace sculpt::app
+}  // namespace sculpt

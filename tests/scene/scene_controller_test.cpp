@@ -2,7 +2,7 @@
 // files), the two-phase hand-over, stepping, live settings, rebuilds, cancellation and the
 // per-cell fields, in the deterministic mode and on threads.
 
-#include "sculpt/scene_controller.h"
+#include "scene/scene_controller.h"
 #include "tools/session_script.h"
 
 #include <gtest/gtest.h>
@@ -17,7 +17,7 @@
 
 #include "fem/fem_mesh.h"
 
-namespace sculpt::app {
+namespace sculpt {
 namespace {
 
 namespace fs = std::filesystem;
@@ -255,12 +255,12 @@ TEST(SceneController, DisplayFirstShowsTheRestShapeBeforeThePhysics) {
 TEST(SceneController, FieldsAreUniformMaterialAndStrainEnergySplitsByElement) {
   const SceneSettings settings;
   SceneController controller(false);
-  controller.setPlaying(false);
+  controller.loop().setPlaying(false);
   controller.load(controlMesh("block3.json"), settings);
   controller.advance();
   const std::shared_ptr<const SceneGeometry> g = controller.takeNewGeometry();
   ASSERT_NE(g, nullptr);
-  controller.reset();
+  controller.loop().reset();
   controller.advance();
   SceneFrame frame = latest(controller);
   ASSERT_EQ(frame.cellYoungs.size(), g->cellMesh.numCells());
@@ -271,7 +271,7 @@ TEST(SceneController, FieldsAreUniformMaterialAndStrainEnergySplitsByElement) {
   // At rest: no strain energy (relative to E, the energy density of a unit strain).
   for (float w : frame.cellStrainEnergy) ASSERT_LE(std::abs(w), 1e-12 * settings.material.youngs);
   EXPECT_EQ(frame.simulatedTime, 0.0);
-  for (int i = 0; i < 10; ++i) controller.stepOnce();
+  for (int i = 0; i < 10; ++i) controller.loop().stepOnce();
   for (int i = 0; i < 10; ++i) controller.advance();
   ASSERT_TRUE(controller.fetchNewer(frame));
   EXPECT_NEAR(frame.simulatedTime, 10.0 / 60.0, 1e-12);
@@ -326,9 +326,9 @@ TEST(SceneController, LiveSettingsResetAndStepping) {
   EXPECT_GT((frame.nodes - g->cellMesh.positions).cwiseAbs().maxCoeff(), 0.0);
 
   // Reset: the rest nodes and control points exactly, time 0.
-  controller.setPlaying(false);
-  EXPECT_FALSE(controller.playing());
-  controller.reset();
+  controller.loop().setPlaying(false);
+  EXPECT_FALSE(controller.loop().playing());
+  controller.loop().reset();
   controller.advance();
   ASSERT_TRUE(controller.fetchNewer(frame));
   EXPECT_EQ(frame.nodes, g->cellMesh.positions);
@@ -337,7 +337,7 @@ TEST(SceneController, LiveSettingsResetAndStepping) {
   // Paused: advance() does nothing; stepOnce() one step.
   controller.advance();
   EXPECT_FALSE(controller.fetchNewer(frame));
-  controller.stepOnce();
+  controller.loop().stepOnce();
   controller.advance();
   ASSERT_TRUE(controller.fetchNewer(frame));
   EXPECT_NEAR(frame.simulatedTime, 1.0 / 60.0, 1e-15);
@@ -348,13 +348,13 @@ TEST(SceneController, LiveSettingsResetAndStepping) {
   settings.material.density = 1500.0;
   controller.applySettings(settings);
   EXPECT_FALSE(controller.buildStatus().running);
-  controller.reset();
+  controller.loop().reset();
   controller.advance();
   ASSERT_TRUE(controller.fetchNewer(frame));
   EXPECT_EQ(controller.takeNewGeometry(), nullptr);
   EXPECT_FLOAT_EQ(frame.cellYoungs.front(), static_cast<float>(settings.material.youngs));
   EXPECT_FLOAT_EQ(frame.cellDensity.back(), 1500.0f);
-  controller.setPlaying(true);
+  controller.loop().setPlaying(true);
   for (int i = 0; i < 10; ++i) controller.advance();
   ASSERT_TRUE(controller.fetchNewer(frame));
   // Without gravity nothing moves the solid from rest.
@@ -636,11 +636,11 @@ TEST(SceneControllerThreaded, ShowsTheRestShapeFirstThenSimulates) {
   }
   expectFinite(frame);
   // Pause: the frames stop; a single step gives exactly one more.
-  controller.setPlaying(false);
+  controller.loop().setPlaying(false);
   std::this_thread::sleep_for(std::chrono::milliseconds(50));
   controller.fetchNewer(frame);
   const double paused = frame.simulatedTime;
-  controller.stepOnce();
+  controller.loop().stepOnce();
   ASSERT_TRUE(waitFor([&] { return controller.fetchNewer(frame); }));
   EXPECT_NEAR(frame.simulatedTime, paused + 1.0 / 60.0, 1e-12);
 }
@@ -698,23 +698,23 @@ TEST(SceneControllerThreaded, CommandsInAnyOrderKeepFramesAndGeometryConsistent)
   for (int i = 0; i < 40; ++i) {
     switch (i % 8) {
       case 0: controller.load(controlMesh(meshes[(i / 8) % 3]), settings); break;
-      case 1: controller.setPlaying(i % 3 != 0); break;
-      case 2: controller.stepOnce(); break;
+      case 1: controller.loop().setPlaying(i % 3 != 0); break;
+      case 2: controller.loop().stepOnce(); break;
       case 3:
         settings.material.youngs = 1e6 + 1e5 * i;
         controller.applySettings(settings);
         break;
-      case 4: controller.reset(); break;
+      case 4: controller.loop().reset(); break;
       case 5: if (i % 3 == 0) controller.cancelBuild(); break;
       case 6: settings.gravity.y() = -9.81 * (i % 2); controller.applySettings(settings); break;
-      default: controller.setPlaying(true); break;
+      default: controller.loop().setPlaying(true); break;
     }
     for (int k = 0; k < 3; ++k) {
       poll();
       std::this_thread::sleep_for(std::chrono::milliseconds(2));
     }
   }
-  controller.setPlaying(true);
+  controller.loop().setPlaying(true);
   controller.load(controlMesh("cube.json"), settings);
   ASSERT_TRUE(waitFor([&] {
     poll();
@@ -750,9 +750,9 @@ TEST(SceneControllerThreaded, DestructionWhileBuildingOrSteppingIsClean) {
 }
 
 }  // namespace
-}  // namespace sculpt::app
+}  // namespace sculpt
 
-namespace sculpt::app {
+namespace sculpt {
 namespace {
 
 // A session script replays on the scene (sculpt --script): a grab that drags the middle of the
@@ -768,7 +768,7 @@ TEST(SceneControllerScript, GrabScriptPullsTheSolidAndResetEndsIt) {
   for (const bool withScript : {true, false}) {
     SceneController controller(false);
     controller.load(controlMesh("block3.json"), SceneSettings{});
-    if (withScript) controller.playScript(script);
+    if (withScript) controller.loop().playScript(script);
     for (int i = 0; i < 20; ++i) controller.advance();
     ASSERT_EQ(controller.buildStatus().error, "");
     const SceneFrame frame = latest(controller);
@@ -776,10 +776,10 @@ TEST(SceneControllerScript, GrabScriptPullsTheSolidAndResetEndsIt) {
     if (withScript) {
       ASSERT_EQ(frame.springs.size(), 1u);
       // The material point has followed the target a good part of the way (x from 1.5 to 2.5).
-      EXPECT_GT(frame.springs[0].first.x(), 1.8);
-      EXPECT_EQ(frame.springs[0].second, Eigen::Vector3d(2.5, 1.0, 1.5));
+      EXPECT_GT(frame.springs[0].point.x(), 1.8);
+      EXPECT_EQ(frame.springs[0].target, Eigen::Vector3d(2.5, 1.0, 1.5));
       pulledX = meanX(frame);
-      controller.reset();
+      controller.loop().reset();
       controller.advance();
       EXPECT_TRUE(latest(controller).springs.empty());
     } else {
@@ -797,16 +797,22 @@ TEST(SceneControllerScript, MouseGrabPullsWhileHeldAndLetsGo) {
   SceneController controller(false);
   controller.load(controlMesh("block3.json"), SceneSettings{});
   controller.advance();
-  controller.grab(Eigen::Vector3d(1.5, 1.0, 1.5), Eigen::Vector3d(1.5, 1.0, 1.5));
+  ToolInput input;
+  input.position = Eigen::Vector3d(1.5, 1.0, 1.5);
+  input.restPoint = Eigen::Vector3d(1.5, 1.0, 1.5);
+  const uint64_t stroke =
+      controller.loop().beginStroke(std::make_unique<PullStroke>(PullStroke::Settings{}), input);
   for (int i = 0; i < 20; ++i) {
-    controller.moveGrab(Eigen::Vector3d(1.5 + 0.05 * (i + 1), 1.0, 1.5));  // a drag along +x
+    input.position = Eigen::Vector3d(1.5 + 0.05 * (i + 1), 1.0, 1.5);  // a drag along +x
+    input.restPoint.reset();
+    controller.loop().updateStroke(stroke, input);
     controller.advance();
   }
   SceneFrame frame = latest(controller);
   ASSERT_EQ(frame.springs.size(), 1u);
-  EXPECT_EQ(frame.springs[0].second, Eigen::Vector3d(2.5, 1.0, 1.5));
-  EXPECT_GT(frame.springs[0].first.x(), 1.8);
-  controller.releaseGrab();
+  EXPECT_EQ(frame.springs[0].target, Eigen::Vector3d(2.5, 1.0, 1.5));
+  EXPECT_GT(frame.springs[0].point.x(), 1.8);
+  controller.loop().endStroke(stroke, input);
   controller.advance();
   frame = latest(controller);
   EXPECT_TRUE(frame.springs.empty());
@@ -821,20 +827,25 @@ TEST(SceneControllerThreaded, BrushEditsAreCapturedAndRestoredOnTheSimulationThr
   SceneFrame frame;
   ASSERT_TRUE(waitForPhysics(controller, frame));
   const auto capture = [&controller] {
-    controller.requestEdits();
-    std::optional<SceneController::Edits> edits;
-    EXPECT_TRUE(waitFor([&] { return (edits = controller.takeEdits()).has_value(); }));
-    return edits.value_or(SceneController::Edits{});
+    controller.loop().requestEdits();
+    std::optional<SceneEdits> edits;
+    EXPECT_TRUE(waitFor([&] { return (edits = controller.loop().takeEdits()).has_value(); }));
+    return edits.value_or(SceneEdits{});
   };
-  const SceneController::Edits before = capture();
+  const SceneEdits before = capture();
   MaterialBrushSettings brush;
   brush.radius = 0.8;
   brush.target.youngs = 5.0e7;
   brush.fields = {false, false, true, false};
   brush.mirror.x = false;
-  controller.paint(Eigen::Vector3d(1.5, 1.5, 1.5), brush);
-  controller.pin(Eigen::Vector3d(0.0, 0.0, 0.0), 0.1, true);
-  const SceneController::Edits painted = capture();
+  const auto dab = [&controller](std::unique_ptr<Tool> tool, const Eigen::Vector3d& rest) {
+    ToolInput input;
+    input.restPoint = rest;
+    controller.loop().endStroke(controller.loop().beginStroke(std::move(tool), input), input);
+  };
+  dab(std::make_unique<PaintStroke>(PaintStroke::Settings{brush, std::nullopt}), Eigen::Vector3d(1.5, 1.5, 1.5));
+  dab(std::make_unique<PinStroke>(PinStroke::Settings{0.1, std::nullopt}), Eigen::Vector3d(0.0, 0.0, 0.0));
+  const SceneEdits painted = capture();
   ASSERT_GT(before.materials.size(), 0u);
   ASSERT_EQ(painted.materials.size(), before.materials.size());
   size_t stiff = 0;
@@ -843,12 +854,12 @@ TEST(SceneControllerThreaded, BrushEditsAreCapturedAndRestoredOnTheSimulationThr
   EXPECT_LT(stiff, painted.materials.size() / 2);
   EXPECT_EQ(painted.pins.size(), before.pins.size() + 1) << "the corner at the origin";
   // Undo: back to the captured state, bit for bit.
-  controller.restoreEdits(before.materials, before.pins);
-  const SceneController::Edits restored = capture();
+  controller.loop().restoreEdits(before.materials, before.pins);
+  const SceneEdits restored = capture();
   EXPECT_TRUE(sameMaterialSamples(restored.materials, before.materials));
   EXPECT_EQ(restored.pins, before.pins);
   EXPECT_TRUE(controller.buildStatus().error.empty()) << controller.buildStatus().error;
 }
 
 }  // namespace
-}  // namespace sculpt::app
+}  // namespace sculpt

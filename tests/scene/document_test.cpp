@@ -1,7 +1,7 @@
-// The window's document (app/sculpt/document.h): undo entries, the dirty marker (clean again when
+// The window's document (scene/document.h): undo entries, the dirty marker (clean again when
 // undo returns to the saved state), Save / Save As, autosave and what a crash leaves behind.
 
-#include "sculpt/document.h"
+#include "scene/document.h"
 
 #include <gtest/gtest.h>
 
@@ -13,7 +13,7 @@
 #include "io/control_mesh_json.h"
 #include "project/project_file.h"
 
-namespace sculpt::app {
+namespace sculpt {
 namespace {
 
 namespace fs = std::filesystem;
@@ -125,4 +125,4 @@ TEST_F(DocumentTest, UntitledAutosavesInTheRecoveryFolderAndFailedSavesReport) {
 }
 
 }  // namespace
-}  // namespace sculpt::app
+}  // namespace sculpt

@@ -18,7 +18,7 @@
 #include "project/project.h"
 #include "project/undo_history.h"
 
-namespace sculpt::app {
+namespace sculpt {
 
 class Document {
  public:
@@ -84,4 +84,4 @@ class Document {
 /// The display name of a project file ("untitled" for an empty path).
 std::string documentName(const std::filesystem::path& path);
 
-}  // namespace sculpt::app
+}  // namespace sculpt

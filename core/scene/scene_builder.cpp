@@ -1,4 +1,4 @@
-#include "sculpt/scene_builder.h"
+#include "scene/scene_builder.h"
 
 #include <cmath>
 #include <filesystem>
@@ -9,17 +9,17 @@
 #include "embed/surface_cage.h"
 #include "io/control_mesh_json.h"
 #include "io/surface_file.h"
-#include "io/vtk_writer.h"
 #include "mesh/boundary_surface.h"
+#include "mesh/hexahedron.h"
 #include "mesh/surface_triangles.h"
 #include "mesh/validation.h"
-#include "sculpt/build_progress.h"
+#include "scene/build_progress.h"
 #include "subdiv/catmull_clark_surface.h"
 #include "subdiv/loop_surface.h"
 #include "subdiv/mj_refiner.h"
 #include "subdiv/regularity.h"
 
-namespace sculpt::app {
+namespace sculpt {
 namespace {
 
 std::string fileName(const std::string& path) {
@@ -303,4 +303,4 @@ std::optional<SceneBuildPhase1> buildSceneGeometry(const SceneSource& source,
   }
 }
 
-}  // namespace sculpt::app
+}  // namespace sculpt

@@ -14,17 +14,16 @@
 
 #include <Eigen/Core>
 
-#include "sculpt/scene_builder.h"
+#include "scene/scene_builder.h"
 #include "project/project.h"
-#include "tools/curve_tool.h"
-#include "tools/inflate_tool.h"
+#include "scene/material_picker.h"
 #include "tools/material_brush.h"
-#include "tools/pull_tool.h"
 #include "tools/session_script.h"
-#include "sim/fem_model.h"
+#include "tools/tool.h"
+#include "fem/fem_model.h"
 #include "sim/simulator.h"
 
-namespace sculpt::app {
+namespace sculpt {
 
 /// A simulation state for the window, O(nodes + cells).
 struct SceneFrame {
@@ -40,16 +39,15 @@ struct SceneFrame {
   double stepMs = 0.0;         ///< wall time of the last step with this frame's update
   StepReport lastStep;
   bool physicsReady = false;   ///< false: the rest shape while phase 2 runs
-  /// Pull springs acting now (a session script's grabs): material point position and target.
-  std::vector<std::pair<Eigen::Vector3d, Eigen::Vector3d>> springs;
-  std::vector<double> springForces;  ///< per spring: its force k |x - target| (N); NaN: unknown
+  /// Springs of the strokes acting now (tools/tool.h; a curve's are not labelled: force NaN).
+  std::vector<ToolSpring> springs;
 };
 
 /// The rest frame of a geometry before its physics exists: rest nodes, identity gradients, rest
 /// control points, the uniform `material`'s fields and no strain energy.
 SceneFrame restFrame(const SceneGeometry& geometry, const Material& material);
 
-class ScenePhysics {
+class ScenePhysics : private ToolContext {
  public:
   /// Phase 2: the elements, the simulator (top layer pinned, gravity, settings) and one first
   /// step (which factorises the implicit solver's preconditioner). Stage times are appended to
@@ -66,34 +64,24 @@ class ScenePhysics {
   const SceneGeometry& geometry() const { return *geometry_; }
   const std::shared_ptr<const SceneGeometry>& sharedGeometry() const { return geometry_; }
   FemModel& model() { return *model_; }
-  Simulator& simulator() { return *simulator_; }
+  Simulator& simulator() override { return *simulator_; }
 
   /// Advances by one time step and updates the state.
   StepReport step();
   /// Back to rest: rest positions, zero velocity, simulated time 0.
   void reset();
-  /// The pull tool of the window: grabs the material point at rest position `rest` with a
-  /// spring to `target` (false when no element holds it), moves the target, lets go.
-  bool grab(const Eigen::Vector3d& rest, const Eigen::Vector3d& target);
-  void moveGrab(const Eigen::Vector3d& target);
-  void releaseGrab(bool keep = false);
   /// Replays a session script (core/tools/session_script.h) from now on, in place of one in
   /// progress; reset() ends it. Throws std::invalid_argument when a grab point cannot be located.
   void playScript(const SessionScript& script);
-  /// The window's brushes (edits of the user's work; scene_controller.h queues them):
-  /// a material dab at rest position `centre` (material_brush.h) returns the samples touched;
-  /// pin or unpin the control points within `radius` of `centre`; press (or move) and release the
-  /// inflate brush.
-  long paint(const Eigen::Vector3d& centre, const MaterialBrushSettings& brush);
-  uint32_t pin(const Eigen::Vector3d& centre, double radius, bool pin);
-  void pressInflate(const Eigen::Vector3d& centre, double radius, double pressure);
-  void releaseInflate();
-  /// The curve tool: grabs the material points along a rest polyline (profile smooth or rigid),
-  /// drags them by `offset` (m), lets go. grabCurve throws std::invalid_argument for a curve
-  /// that cannot be located.
-  void grabCurve(const std::vector<Eigen::Vector3d>& polyline, bool smooth);
-  void dragCurve(const Eigen::Vector3d& offset);
-  void releaseCurve();
+  /// Strokes of any tool (tools/tool.h), named by the caller's id: begin throws
+  /// std::invalid_argument with a sentence when the stroke cannot start (nothing changes then);
+  /// update and end of an unknown id (ended, or dropped by reset()) do nothing. A tool that
+  /// still holds loads after its end (a kept pull spring) stays until reset().
+  void beginStroke(uint64_t id, std::unique_ptr<Tool> tool, const ToolInput& input);
+  void updateStroke(uint64_t id, const ToolInput& input);
+  void endStroke(uint64_t id, const ToolInput& input);
+  /// The springs of the strokes acting now (a script's included, id 0), with their stroke ids.
+  void strokeSprings(std::vector<std::pair<uint64_t, ToolSpring>>& out) const;
   /// The edited state as a project keeps it: painted materials (captureMaterials at level K) and
   /// the pinned control points (ascending).
   MaterialSamples captureMaterialSamples() const;
@@ -116,10 +104,11 @@ class ScenePhysics {
  private:
   ScenePhysics() = default;
   void setGravity(const Eigen::Vector3d& gravity);
-  std::unique_ptr<ScriptPlayer> player_;  ///< the session script being replayed, if any
-  std::unique_ptr<PullTool> pull_;        ///< the window's pull tool (created on first use)
-  std::unique_ptr<InflateTool> inflate_;  ///< the window's inflate brush (created on first use)
-  std::unique_ptr<CurveTool> curve_;      ///< the window's curve tool (created on first use)
+  // ToolContext
+  const MaterialPointLocator& locator() override;
+  std::optional<Eigen::Vector3d> restPointAt(const Eigen::Vector3d& world) override;
+  void materialsChanged() override;
+
   void updateState();          // nodes, gradients, strain energy from the simulator's state
   void updateMaterialFields();  // per-element mean E and density
 
@@ -133,10 +122,16 @@ class ScenePhysics {
   StepReport lastStep_;
   double lastStepMs_ = 0.0;
 
+  std::optional<MaterialPointLocator> locator_;
+  std::unique_ptr<MaterialPicker> picker_;  // over nodes_, made on the first pick after a change
+  // Strokes and the script (after the simulator: their loads go first)
+  std::unique_ptr<ScriptPlayer> player_;
+  std::vector<std::pair<uint64_t, std::unique_ptr<Tool>>> strokes_, retained_;
+
   Points femNodes_, nodes_;
   std::vector<Eigen::Matrix3d> gradients_;
   std::vector<double> elementVolume_, elementEnergy_, elementEnergyDensity_;
   std::vector<double> elementYoungs_, elementDensity_, elementDamping_;
 };
 
-}  // namespace sculpt::app
+}  // namespace sculpt

@@ -6,10 +6,10 @@
 #include <string>
 #include <utility>
 
-#include "sculpt/scene_builder.h"
+#include "scene/scene_builder.h"
 #include "util/progress.h"
 
-namespace sculpt::app {
+namespace sculpt {
 
 /// One stage of a build. start() reports the stage's beginning (false: cancelled); reporter()
 /// maps a sub-task's fractions [0, 1] into the span (null when the build reports nothing).
@@ -47,4 +47,4 @@ class StageClock {
   Clock::time_point start_;
 };
 
-}  // namespace sculpt::app
+}  // namespace sculpt

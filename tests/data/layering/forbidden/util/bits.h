@@ -1,0 +1,3 @@
+#pragma once
+// Fixture: nothing wrong here.
+#include <cstdint>

@@ -1,0 +1,3 @@
+#pragma once
+// Fixture: an include of the folder itself, allowed.
+#include <vector>
