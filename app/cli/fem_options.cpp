@@ -1,5 +1,7 @@
 #include "cli/fem_options.h"
 
+#include "scene/control_export.h"
+
 #include <charconv>
 #include <cmath>
 #include <sstream>
@@ -137,11 +139,7 @@ SimulationSettings parseIntegratorAndStep(const CliArgs& args, bool dtRequired) 
 
 void writeDeformedControlVtk(const FemModel& model, const Points& positions,
                              const std::string& path) {
-  CellComplex deformed = model.control();
-  deformed.positions = positions;
-  const Points displacement = positions - model.restControl();
-  const VtkPointVectors field{"displacement", &displacement};
-  writeVtk(deformed, model.subdivision().topologies.front(), path, {&field, 1});
+  sculpt::writeDeformedControlVtk(model.control(), positions, path);
 }
 
 double maxNodeDisplacement(const FemModel& model, const Points& control) {

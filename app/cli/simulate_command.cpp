@@ -6,6 +6,9 @@
 #include <chrono>
 #include <cmath>
 #include <cstdio>
+#include <filesystem>
+#include <functional>
+#include <memory>
 #include <iostream>
 #include <optional>
 #include <string>
@@ -19,12 +22,18 @@
 #include "sim/standard_forms.h"
 #include "tools/script_topology.h"
 #include "tools/session_script.h"
+#include "project/project_file.h"
+#include "scene/control_export.h"
+#include "scene/scene_file.h"
+#include "scene/scene_physics.h"
 
 namespace sculpt::cli {
 
 const char* const kSimulateUsage =
     "  simulate CONTROL.json [FEM options] [--integrator paper|implicit] --dt S --steps N\n"
     "           [--gravity] [--script SESSION.json] --out FINAL.vtk\n"
+    "  simulate SCENE [--levels K] [--cage N] [--integrator paper|implicit] [--dt S]\n"
+    "           [--steps N] [--script SESSION.json] --out FINAL.vtk\n"
     "      Integrates N steps of S seconds from rest (0 < S <= 10, 1 <= N <= 10000000) with\n"
     "      the paper's central differences or backward Euler (implicit, the default).\n"
     "      --gravity adds g = (0, -9.81, 0) m/s^2: the y axis points up. A step that fails is\n"
@@ -40,7 +49,14 @@ const char* const kSimulateUsage =
     "      stderr. With --script, --steps defaults to the script's length. A malformed\n"
     "      script is one error line naming the event and field (exit 2). Topology events\n"
     "      (t = 0) edit CONTROL in file order before the model is built, so the run starts\n"
-    "      from the edited rest shape; one that cannot be applied is an error (exit 2).\n";
+      "      from the edited rest shape; one that cannot be applied is an error (exit 2).\n"
+    "      SCENE is a surface (OBJ, glTF) caged as the window cages it, or a .sculpt project\n"
+    "      (its cage or control mesh, pins, painted materials and saved settings): the scene\n"
+    "      the window runs, with its defaults (a surface: the top layer pinned, gravity, a\n"
+    "      1/60 s step, level 1, a 6-cell cage), which the options override. N counts every\n"
+    "      step, the build's first one included; the script starts after it, as in the\n"
+    "      window, so `sculpt --headless --scene SCENE --script S --frames N --out F.vtk`\n"
+    "      writes the same control points.\n";
 
 namespace {
 
@@ -118,6 +134,118 @@ class StepMessages {
   long suppressed_ = 0;
 };
 
+// The stepping shared by control meshes and scenes: progress about once per second, the first
+// message of each kind, a stop at the first step that fails even with sub-steps.
+struct StepTotals {
+  int completed = 0;
+  long long substeps = 0, iterations = 0;
+  bool failed = false;
+  int stepsRun() const { return completed + (failed ? 1 : 0); }
+};
+
+StepTotals runSteps(int first, int steps, const std::string& out, Simulator& simulator,
+                    const std::function<StepReport()>& step,
+                    const std::function<void()>& afterStep) {
+  const Clock::time_point start = Clock::now();
+  Clock::time_point lastProgress = start;
+  StepMessages messages;
+  StepTotals totals;
+  for (int i = first; i <= steps; ++i) {
+    const StepReport report = step();
+    if (afterStep) afterStep();
+    totals.iterations += report.iterations;
+    if (report.ok) {
+      ++totals.completed;
+      totals.substeps += report.substeps;
+    }
+    if (!report.message.empty() || !report.ok)
+      messages.add(i, report.message.empty() ? "step failed" : report.message);
+    if (!report.ok) {
+      totals.failed = true;
+      std::cerr << "simulate: stopped at step " << i << " of " << steps << "; " << out
+                << " holds the state before it\n";
+      break;
+    }
+    const Clock::time_point now = Clock::now();
+    if (now - lastProgress >= std::chrono::seconds(1) && i < steps) {
+      lastProgress = now;
+      char line[160];
+      std::snprintf(line, sizeof line,
+                    "[%7.2f s] step %d/%d t=%.6g s kinetic=%.4g J elastic=%.4g J",
+                    std::chrono::duration<double>(now - start).count(), i, steps, simulator.time(),
+                    simulator.kineticEnergy(), simulator.elasticEnergy());
+      std::cerr << line << '\n';
+    }
+  }
+  messages.printSummary(totals.stepsRun());
+  return totals;
+}
+
+void printTotals(const StepTotals& totals, double time, double maxDisplacement,
+                 Simulator& simulator) {
+  std::printf(
+      "steps=%d time=%.9g max_displacement=%.9g kinetic_energy=%.9g elastic_energy=%.9g "
+      "substeps=%lld cg_iterations=%.1f\n",
+      totals.completed, time, maxDisplacement, simulator.kineticEnergy(), simulator.elasticEnergy(),
+      totals.substeps, static_cast<double>(totals.iterations) / std::max(1, totals.stepsRun()));
+}
+
+int stepsFor(const CliArgs& args, const std::optional<SessionScript>& script, double timeStep,
+             int extra) {
+  if (!args.has("steps") && !script) throw UsageError("--steps is required (or --script)");
+  return args.has("steps")
+             ? args.intValue("steps", 0, 1, kMaxSteps)
+             : static_cast<int>(std::clamp(
+                   std::ceil(script->duration() / timeStep - 1e-9) + extra, 1.0, double(kMaxSteps)));
+}
+
+// A surface or a project, built and run by the scene pipeline the window uses (core/scene).
+int simulateScene(const CliArgs& args, const std::string& file, const std::string& out) {
+  for (const char* option : {"trilinear", "E", "nu", "density", "damping", "fix", "force", "gravity"})
+    if (args.has(option))
+      throw UsageError(std::string("--") + option +
+                       " is for control meshes; a scene brings its own (save them in its project)");
+  SceneSettings settings;
+  SceneSource source = sceneSourceFor(file);
+  if (isProjectPath(file)) {
+    ProjectScene scene = projectScene(loadProject(file), file,
+                                      std::filesystem::path(file).filename().string(), settings);
+    for (const std::string& warning : scene.warnings) std::cerr << "simulate: " << warning << '\n';
+    source = std::move(scene.source);
+    settings = scene.settings;
+  }
+  if (args.has("levels")) settings.level = args.intValue("levels", 1, 1, 3);
+  if (args.has("cage")) settings.cageCellsAcross = args.intValue("cage", 6, 1, 64);
+  if (args.has("integrator") || args.has("dt")) {
+    const SimulationSettings given = parseIntegratorAndStep(args, false);
+    if (args.has("integrator")) settings.integrator = given.integrator;
+    if (args.has("dt")) settings.timeStep = given.timeStep;
+  }
+  std::optional<SessionScript> script;
+  if (args.has("script")) script = loadSessionScript(args.requiredValue("script"));
+  if (script)
+    for (const ScriptEvent& event : script->events)
+      if (std::holds_alternative<TopologyEvent>(event.action))
+        return printError(args.requiredValue("script") +
+                          ": topology events edit a control mesh; run them on the .json file");
+  const int steps = stepsFor(args, script, settings.timeStep, 1);
+
+  std::optional<SceneBuildPhase1> phase1 = buildSceneGeometry(source, settings, 1);
+  StageTimes times;
+  std::unique_ptr<ScenePhysics> physics =
+      ScenePhysics::build(phase1->geometry, phase1->solid, settings, nullptr, &times);
+  std::cerr << "simulate: " << phase1->geometry->description << ", "
+            << physics->model().numControlPoints() << " control points\n";
+  if (script) physics->playScript(*script);  // from the step after the build's first one, as the window
+  Simulator& simulator = physics->simulator();
+  StepTotals totals = runSteps(2, steps, out, simulator, [&] { return physics->step(); }, {});
+  ++totals.completed;  // the build's first step
+  sculpt::writeDeformedControlVtk(physics->model().control(), simulator.positions(), out);
+  printTotals(totals, physics->simulatedTime(),
+              maxNodeDisplacement(physics->model(), simulator.positions()), simulator);
+  return totals.failed ? 1 : kExitSuccess;
+}
+
 int simulateCommand(const CliArgs& args, std::string& file) {
   if (args.has("help")) {
     std::cout << "usage:\n" << kSimulateUsage << kFemOptionsUsage;
@@ -125,22 +253,19 @@ int simulateCommand(const CliArgs& args, std::string& file) {
   }
   if (args.positional().size() != 1)
     throw UsageError("simulate needs exactly one CONTROL file (see --help)");
-  const FemCommandOptions options = parseFemOptions(args);
-  SimulationSettings settings = parseIntegratorAndStep(args, true);
   const std::string out = args.requiredValue("out");
   if (lowerExtension(out) != ".vtk")
     throw UsageError("--out " + out + ": unknown extension (expected .vtk)");
+  file = args.positional()[0];
+  if (lowerExtension(file) != ".json") return simulateScene(args, file, out);
+  if (args.has("cage")) throw UsageError("--cage is for surfaces caged as a scene");
+  const FemCommandOptions options = parseFemOptions(args);
+  SimulationSettings settings = parseIntegratorAndStep(args, true);
   // The script is read before the model is built, so that a bad one fails fast.
   std::optional<SessionScript> script;
   if (args.has("script")) script = loadSessionScript(args.requiredValue("script"));
-  if (!args.has("steps") && !script) throw UsageError("--steps is required (or --script)");
-  const int steps =
-      args.has("steps")
-          ? args.intValue("steps", 0, 1, kMaxSteps)
-          : static_cast<int>(std::clamp(std::ceil(script->duration() / settings.timeStep - 1e-9),
-                                        1.0, double(kMaxSteps)));
+  const int steps = stepsFor(args, script, settings.timeStep, 0);
 
-  file = args.positional()[0];
   const std::optional<LoadedMesh> loaded = loadValidControlMesh(file);
   if (!loaded) return kExitBadInput;
   CellComplex control = loaded->mesh;
@@ -167,52 +292,17 @@ int simulateCommand(const CliArgs& args, std::string& file) {
   std::optional<ScriptPlayer> player;
   if (script) player.emplace(simulator, std::move(*script));
 
-  const Clock::time_point start = Clock::now();
-  Clock::time_point lastProgress = start;
-  StepMessages messages;
-  int completed = 0;
-  long long substeps = 0;
-  long long iterations = 0;
-  bool failed = false;
-  for (int i = 1; i <= steps; ++i) {
-    const StepReport report = player ? player->step() : simulator.step();
-    if (player)
-      for (const std::string& line : player->takeLog()) std::cerr << "simulate: script: " << line << '\n';
-    iterations += report.iterations;
-    if (report.ok) {
-      ++completed;
-      substeps += report.substeps;
-    }
-    if (!report.message.empty() || !report.ok)
-      messages.add(i, report.message.empty() ? "step failed" : report.message);
-    if (!report.ok) {
-      failed = true;
-      std::cerr << "simulate: stopped at step " << i << " of " << steps << "; " << out
-                << " holds the state before it\n";
-      break;
-    }
-    const Clock::time_point now = Clock::now();
-    if (now - lastProgress >= std::chrono::seconds(1) && i < steps) {
-      lastProgress = now;
-      char line[160];
-      std::snprintf(line, sizeof line,
-                    "[%7.2f s] step %d/%d t=%.6g s kinetic=%.4g J elastic=%.4g J",
-                    std::chrono::duration<double>(now - start).count(), i, steps, simulator.time(),
-                    simulator.kineticEnergy(), simulator.elasticEnergy());
-      std::cerr << line << '\n';
-    }
-  }
-  const int stepsRun = completed + (failed ? 1 : 0);
-  messages.printSummary(stepsRun);
-
+  const StepTotals totals = runSteps(1, steps, out, simulator,
+      [&] { return player ? player->step() : simulator.step(); },
+      [&] {
+        if (player)
+          for (const std::string& line : player->takeLog())
+            std::cerr << "simulate: script: " << line << '\n';
+      });
   writeDeformedControlVtk(*model, simulator.positions(), out);
-  std::printf(
-      "steps=%d time=%.9g max_displacement=%.9g kinetic_energy=%.9g elastic_energy=%.9g "
-      "substeps=%lld cg_iterations=%.1f\n",
-      completed, simulator.time(), maxNodeDisplacement(*model, simulator.positions()),
-      simulator.kineticEnergy(), simulator.elasticEnergy(), substeps,
-      static_cast<double>(iterations) / stepsRun);
-  return failed ? 1 : kExitSuccess;
+  printTotals(totals, simulator.time(), maxNodeDisplacement(*model, simulator.positions()),
+              simulator);
+  return totals.failed ? 1 : kExitSuccess;
 }
 
 }  // namespace
@@ -227,6 +317,7 @@ int runSimulateCommand(const std::vector<std::string>& args) {
                                {"gravity", false},
                                {"out", true},
                                {"script", true},
+                               {"cage", true},
                                {"help", false}});
     return simulateCommand(CliArgs::parse(args, specs), file);
   });

@@ -21,6 +21,8 @@ const char* const kUsage =
     "  --show-help            open the keys-and-mouse overlay (F1) at start\n"
     "  --headless             render offscreen (needs an X display: use xvfb-run without one)\n"
     "  --screenshot OUT.png   headless: write the last frame there\n"
+    "  --out FINAL.vtk        headless: write the final control mesh there (as sculpt-cli\n"
+    "                         simulate --out does)\n"
     "  --frames N             headless: frames to simulate and draw (default 60)\n"
     "  --supersample 1|2|4    screenshot resolution factor (downsampled)\n"
     "  --transparent          screenshot with a transparent background\n"
@@ -124,6 +126,8 @@ Options parseOptions(int argc, char** argv, bool* helpShown) {
       framesGiven = true;
     } else if (arg == "--screenshot") {
       options.screenshot = value();
+    } else if (arg == "--out") {
+      options.out = value();
     } else if (arg == "--supersample") {
       options.supersample = intIn(arg, value(), 1, 4);
       if (options.supersample == 3) throw std::invalid_argument("--supersample must be 1, 2 or 4");
@@ -152,10 +156,12 @@ Options parseOptions(int argc, char** argv, bool* helpShown) {
     }
   }
   if (options.benchFrames > 0) options.headless = true;
-  if (options.headless && options.screenshot.empty() && options.benchFrames == 0)
-    throw std::invalid_argument("--headless needs --screenshot OUT.png (or --bench N)");
-  if (!options.headless && (framesGiven || !options.screenshot.empty() || options.noUi))
-    throw std::invalid_argument("--frames, --screenshot and --no-ui need --headless");
+  if (options.headless && options.screenshot.empty() && options.out.empty() &&
+      options.benchFrames == 0)
+    throw std::invalid_argument("--headless needs --screenshot OUT.png, --out FINAL.vtk or --bench N");
+  if (!options.headless &&
+      (framesGiven || !options.screenshot.empty() || !options.out.empty() || options.noUi))
+    throw std::invalid_argument("--frames, --screenshot, --out and --no-ui need --headless");
   return options;
 }
 

@@ -2,7 +2,7 @@
 // The window's command line:
 //   sculpt [--scene FILE] [--level K] [--method M] [--field F] [--clip x|y|z] [--wireframe]
 //          [--show-cells] [--show-control] [--preset blender|stylus] [--ui-scale S]
-//          [--headless --screenshot OUT.png [--frames N] [--supersample 1|2|4] [--transparent]
+//          [--headless [--screenshot OUT.png] [--out FINAL.vtk] [--frames N] [--supersample 1|2|4] [--transparent]
 //           [--no-ui]] [--size WxH] [--quit-after SECONDS] [--bench N]
 
 #include <optional>
@@ -23,6 +23,7 @@ struct Options {
   bool headless = false;
   int frames = 60;
   std::string screenshot;
+  std::string out;  ///< headless: the final control mesh (.vtk), as sculpt-cli simulate writes it
   int supersample = 1;
   bool transparent = false;
   bool noUi = false;  ///< headless: the 3D view alone, without panels

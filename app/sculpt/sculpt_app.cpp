@@ -19,6 +19,8 @@
 #include "sculpt/draw_benchmark.h"
 #include "sculpt/help_overlay.h"
 #include "sculpt/ui_scale.h"
+#include "scene/control_export.h"
+#include "scene/scene_file.h"
 #include "project/autosave.h"
 #include "project/project_file.h"
 #include "tools/script_topology.h"
@@ -51,13 +53,6 @@ FieldKind nextField(FieldKind field) {
   return kFieldKinds[static_cast<size_t>((it - kFieldKinds.begin() + 1) % kFieldKinds.size())];
 }
 
-SceneSource sourceFor(const std::string& path) {
-  if (path.empty()) return {};
-  std::string extension = std::filesystem::path(path).extension().string();
-  std::transform(extension.begin(), extension.end(), extension.begin(),
-                 [](unsigned char c) { return static_cast<char>(std::tolower(c)); });
-  return {extension == ".json" ? SceneKind::ControlMesh : SceneKind::ImportedSurface, path, nullptr};
-}
 
 }  // namespace
 
@@ -114,7 +109,7 @@ SculptApp::SculptApp(GLFWwindow* window, const Options& options, Clock::time_poi
   if (std::filesystem::path(options.scene).extension() == kProjectExtension) {
     openProject(options.scene, options.scene);  // FileError: main reports it, exit 2
   } else {
-    documentSource_ = sourceFor(options.scene);
+    documentSource_ = sceneSourceFor(options.scene);
     controller_->load(documentSource_, model_.settings);
   }
   if (!options.script.empty()) {
@@ -455,7 +450,7 @@ void SculptApp::applyScriptTopology() {
 void SculptApp::loadScene(const std::string& path) {
   model_.sceneFile = path;
   cameraFramed_ = false;
-  documentSource_ = sourceFor(path);
+  documentSource_ = sceneSourceFor(path);
   documentFromNextScene_ = true;
   controller_->load(documentSource_, model_.settings);
 }
@@ -674,6 +669,16 @@ int SculptApp::runHeadless() {
     }
   }
   glFinish();
+  if (!options_.out.empty()) {
+    if (!view_.hasGeometry() || !view_.geometry()->controlMesh) {
+      std::cerr << "error: no scene to write to " << options_.out << '\n';
+      return 2;
+    }
+    writeDeformedControlVtk(*view_.geometry()->controlMesh, latest_.control, options_.out);
+    std::cout << "wrote " << options_.out << " (" << latest_.control.rows()
+              << " control points, simulated " << latest_.simulatedTime << " s)\n";
+  }
+  if (options_.screenshot.empty()) return 0;
   ScreenshotSettings settings = model_.screenshot;
   settings.includePanels = !options_.noUi;
   writeScreenshot(options_.screenshot, settings);

@@ -8,43 +8,10 @@
 
 #include "edit/project_edit.h"
 #include "project/project_file.h"
+#include "scene/scene_file.h"
 #include "sculpt/sculpt_app.h"
 
 namespace sculpt::app {
-namespace {
-
-// Where the document's surface comes from, kept in the project's tool settings.
-constexpr char kSourceKey[] = "scene.source";
-
-std::string sourceName(SceneKind kind) {
-  switch (kind) {
-    case SceneKind::DefaultBunny: return "bunny";
-    case SceneKind::ImportedSurface: return "surface";
-    case SceneKind::ControlMesh: return "control";
-  }
-  return "control";
-}
-
-std::string fileHash(const std::string& path) {
-  std::ifstream in(path, std::ios::binary);
-  if (!in) return {};
-  std::ostringstream bytes;
-  bytes << in.rdbuf();
-  return contentHash(bytes.str());
-}
-
-bool isProjectFile(const std::string& path) {
-  std::string extension = std::filesystem::path(path).extension().string();
-  std::transform(extension.begin(), extension.end(), extension.begin(),
-                 [](unsigned char c) { return static_cast<char>(std::tolower(c)); });
-  return extension == kProjectExtension || extension == ".recovery";
-}
-
-Integrator integratorFromName(const std::string& name) {
-  return name == "paper" ? Integrator::Paper : Integrator::Implicit;
-}
-
-}  // namespace
 
 void SculptApp::startDocumentFromScene(const SceneGeometry& geometry) {
   Project project;
@@ -55,8 +22,8 @@ void SculptApp::startDocumentFromScene(const SceneGeometry& geometry) {
                              ? std::string("bunny.obj")
                              : std::filesystem::absolute(documentSource_.path).string();
   if (documentSource_.kind == SceneKind::ImportedSurface)
-    project.surface.contentHash = fileHash(documentSource_.path);
-  project.tools[kSourceKey] = sourceName(documentSource_.kind);
+    project.surface.contentHash = fileContentHash(documentSource_.path);
+  project.tools[kSceneSourceKey] = sceneKindName(documentSource_.kind);
   document_.start(std::move(project));
   storeSettingsInProject();
 }
@@ -68,17 +35,12 @@ void SculptApp::storeSettingsInProject() {
   p.camera.pitchRad = camera_.pitch();
   p.camera.distance = camera_.distance();
   p.camera.orthographic = camera_.orthographic();
-  const std::string source = std::get<std::string>(p.tools.count(kSourceKey)
-                                                       ? p.tools.at(kSourceKey)
+  const std::string source = std::get<std::string>(p.tools.count(kSceneSourceKey)
+                                                       ? p.tools.at(kSceneSourceKey)
                                                        : ToolValue(std::string("bunny")));
   storeToolState(model_.tools, p.tools);
-  p.tools[kSourceKey] = source;
-  p.tools["scene.cageCellsAcross"] = model_.settings.cageCellsAcross;
-  p.tools["scene.renderLevel"] = static_cast<double>(model_.settings.renderLevel);
-  p.simulation.integrator = model_.settings.integrator == Integrator::Paper ? "paper" : "implicit-euler";
-  p.simulation.timeStepS = model_.settings.timeStep;
-  p.simulation.gravity = model_.settings.gravity;
-  p.simulation.level = model_.settings.level;
+  p.tools[kSceneSourceKey] = source;
+  storeSceneSettings(model_.settings, p);
 }
 
 void SculptApp::loadDocumentScene() {
@@ -89,7 +51,7 @@ void SculptApp::loadDocumentScene() {
 }
 
 void SculptApp::openFile(const std::string& path) {
-  if (!isProjectFile(path)) {
+  if (!isProjectPath(path)) {
     loadScene(path);
     return;
   }
@@ -102,44 +64,16 @@ void SculptApp::openFile(const std::string& path) {
 
 void SculptApp::openProject(const std::filesystem::path& path, const std::filesystem::path& from) {
   Project project = loadProject(from);  // FileError: one sentence naming the file
-  const auto source = project.tools.find(kSourceKey);
-  const std::string kind =
-      source != project.tools.end() && std::holds_alternative<std::string>(source->second)
-          ? std::get<std::string>(source->second)
-          : std::string("control");
-  SceneSource scene;
-  scene.kind = kind == "bunny"     ? SceneKind::DefaultBunny
-               : kind == "surface" ? SceneKind::ImportedSurface
-                                   : SceneKind::ControlMesh;
-  if (scene.kind == SceneKind::ImportedSurface) {
-    std::filesystem::path surface = project.surface.path;
-    if (surface.is_relative()) surface = from.parent_path() / surface;
-    scene.path = surface.string();
-    if (!std::filesystem::exists(surface))
-      throw std::runtime_error(path.filename().string() + ": its surface " + surface.string() +
-                               " does not exist");
-    if (!project.surface.contentHash.empty() && fileHash(scene.path) != project.surface.contentHash)
-      model_.toast("the surface " + surface.filename().string() +
-                   " changed since the project was saved", true, 8.0);
-  }
+  ProjectScene scene = projectScene(project, from, path.filename().string(), model_.settings);
+  for (const std::string& warning : scene.warnings) model_.toast(warning, true, 8.0);
+  scene.source.project = nullptr;  // loadDocumentScene() gives the scene the document's project
   // Settings saved with the project
   model_.tools = loadToolState(project.tools);
-  SceneSettings& s = model_.settings;
-  s.level = std::clamp(project.simulation.level, 1, 3);
-  s.integrator = integratorFromName(project.simulation.integrator);
-  if (project.simulation.timeStepS > 0 && std::isfinite(project.simulation.timeStepS))
-    s.timeStep = project.simulation.timeStepS;
-  if (project.simulation.gravity.allFinite()) s.gravity = project.simulation.gravity;
-  if (const auto it = project.tools.find("scene.cageCellsAcross");
-      it != project.tools.end() && std::holds_alternative<double>(it->second))
-    s.cageCellsAcross = std::clamp(std::get<double>(it->second), 1.0, 64.0);
-  if (const auto it = project.tools.find("scene.renderLevel");
-      it != project.tools.end() && std::holds_alternative<double>(it->second))
-    s.renderLevel = std::clamp(static_cast<int>(std::get<double>(it->second)), 0, 5);
+  model_.settings = scene.settings;
   const CameraState camera = project.camera;
   const bool recovered = from != path;
   document_.start(std::move(project), path, recovered);  // recovered work is unsaved work
-  documentSource_ = scene;
+  documentSource_ = scene.source;
   // A project written without a view (a script, another program) is framed when it shows up.
   cameraFramed_ = !(camera == CameraState{});
   if (cameraFramed_) {

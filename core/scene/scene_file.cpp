@@ -1,0 +1,108 @@
+#include "scene/scene_file.h"
+
+#include <algorithm>
+#include <cctype>
+#include <cmath>
+#include <fstream>
+#include <memory>
+#include <sstream>
+#include <stdexcept>
+
+#include "project/project_file.h"
+
+namespace sculpt {
+namespace {
+
+std::string lowerExtension(const std::filesystem::path& path) {
+  std::string extension = path.extension().string();
+  std::transform(extension.begin(), extension.end(), extension.begin(),
+                 [](unsigned char c) { return static_cast<char>(std::tolower(c)); });
+  return extension;
+}
+
+Integrator integratorFromName(const std::string& name) {
+  return name == "paper" ? Integrator::Paper : Integrator::Implicit;
+}
+
+}  // namespace
+
+const char* sceneKindName(SceneKind kind) {
+  switch (kind) {
+    case SceneKind::DefaultBunny: return "bunny";
+    case SceneKind::ImportedSurface: return "surface";
+    case SceneKind::ControlMesh: return "control";
+  }
+  return "control";
+}
+
+SceneKind sceneKindFromName(const std::string& name) {
+  return name == "bunny"     ? SceneKind::DefaultBunny
+         : name == "surface" ? SceneKind::ImportedSurface
+                             : SceneKind::ControlMesh;
+}
+
+bool isProjectPath(const std::filesystem::path& path) {
+  const std::string extension = lowerExtension(path);
+  return extension == kProjectExtension || extension == ".recovery";
+}
+
+SceneSource sceneSourceFor(const std::string& path) {
+  if (path.empty()) return {};
+  return {lowerExtension(path) == ".json" ? SceneKind::ControlMesh : SceneKind::ImportedSurface,
+          path, nullptr};
+}
+
+std::string fileContentHash(const std::filesystem::path& path) {
+  std::ifstream in(path, std::ios::binary);
+  if (!in) return {};
+  std::ostringstream bytes;
+  bytes << in.rdbuf();
+  return contentHash(bytes.str());
+}
+
+ProjectScene projectScene(Project project, const std::filesystem::path& from,
+                          const std::string& name, const SceneSettings& defaults) {
+  ProjectScene scene;
+  const auto source = project.tools.find(kSceneSourceKey);
+  scene.source.kind = sceneKindFromName(
+      source != project.tools.end() && std::holds_alternative<std::string>(source->second)
+          ? std::get<std::string>(source->second)
+          : std::string("control"));
+  if (scene.source.kind == SceneKind::ImportedSurface) {
+    std::filesystem::path surface = project.surface.path;
+    if (surface.is_relative()) surface = from.parent_path() / surface;
+    scene.source.path = surface.string();
+    if (!std::filesystem::exists(surface))
+      throw std::runtime_error(name + ": its surface " + surface.string() + " does not exist");
+    if (!project.surface.contentHash.empty() &&
+        fileContentHash(surface) != project.surface.contentHash)
+      scene.warnings.push_back("the surface " + surface.filename().string() +
+                               " changed since the project was saved");
+  }
+  SceneSettings& s = scene.settings;
+  s = defaults;
+  s.level = std::clamp(project.simulation.level, 1, 3);
+  s.integrator = integratorFromName(project.simulation.integrator);
+  if (project.simulation.timeStepS > 0 && std::isfinite(project.simulation.timeStepS))
+    s.timeStep = project.simulation.timeStepS;
+  if (project.simulation.gravity.allFinite()) s.gravity = project.simulation.gravity;
+  if (const auto it = project.tools.find("scene.cageCellsAcross");
+      it != project.tools.end() && std::holds_alternative<double>(it->second))
+    s.cageCellsAcross = std::clamp(std::get<double>(it->second), 1.0, 64.0);
+  if (const auto it = project.tools.find("scene.renderLevel");
+      it != project.tools.end() && std::holds_alternative<double>(it->second))
+    s.renderLevel = std::clamp(static_cast<int>(std::get<double>(it->second)), 0, 5);
+  scene.source.project = std::make_shared<const Project>(std::move(project));
+  return scene;
+}
+
+void storeSceneSettings(const SceneSettings& settings, Project& project) {
+  project.tools["scene.cageCellsAcross"] = settings.cageCellsAcross;
+  project.tools["scene.renderLevel"] = static_cast<double>(settings.renderLevel);
+  project.simulation.integrator = settings.integrator == Integrator::Paper ? "paper" : "implicit-euler";
+  project.simulation.timeStepS = settings.timeStep;
+  project.simulation.gravity = settings.gravity;
+  project.simulation.level = settings.level;
+}
+
+}  // namespace sculpt

@@ -1,0 +1,183 @@
+// The simulation loop on its own thread: paced by its own clock at the set ratio of simulated
+// to real time while a tool is updated at 1 kHz (no step taken because of a command, the newest
+// input applied once per step), step observers that see every step, and the probe read from a
+// second thread at 1 kHz (ThreadSanitizer checks these tests in scripts/test.sh --tsan).
+
+#include "scene/simulation_loop.h"
+
+#include <gtest/gtest.h>
+
+#include <algorithm>
+#include <atomic>
+#include <chrono>
+#include <cmath>
+#include <cstdio>
+#include <mutex>
+#include <thread>
+#include <vector>
+
+#include "tools/strokes.h"
+
+namespace sculpt {
+namespace {
+
+using Clock = std::chrono::steady_clock;
+
+std::unique_ptr<ScenePhysics> blockPhysics(const SceneSettings& settings) {
+  const SceneSource source(SceneKind::ControlMesh, std::string(SCULPT_SOURCE_DIR) + "/assets/block3.json");
+  std::optional<SceneBuildPhase1> phase1 = buildSceneGeometry(source, settings, 1);
+  EXPECT_TRUE(phase1.has_value());
+  StageTimes times;
+  return ScenePhysics::build(phase1->geometry, phase1->solid, settings, nullptr, &times);
+}
+
+void install(SimulationLoop& loop, std::unique_ptr<ScenePhysics> physics) {
+  SceneFrame first;
+  physics->fillFrame(first);
+  loop.install(std::move(physics), std::move(first));
+}
+
+double seconds(Clock::duration d) { return std::chrono::duration<double>(d).count(); }
+
+TEST(SimulationLoop, StepsAtTheSetRateWhileAToolIsUpdatedAt1kHz) {
+  SceneSettings settings;  // dt = 1/60 s
+  const double rate = 0.5;  // simulated seconds per wall second: a step every 33 ms
+  SimulationLoop loop(true);
+  loop.setRealTimeRate(rate);
+  std::mutex mutex;
+  std::vector<double> stepWall, stepSimulated;
+  const Clock::time_point origin = Clock::now();
+  loop.addStepObserver([&](const StepState& state) {
+    const std::lock_guard lock(mutex);
+    stepWall.push_back(seconds(Clock::now() - origin));
+    stepSimulated.push_back(state.simulatedTime);
+  });
+  std::shared_ptr<ProbeChannel> probe = loop.openProbe();
+  install(loop, blockPhysics(settings));
+
+  // Let it settle into its pace, then drag a pull stroke with an update every millisecond.
+  std::this_thread::sleep_for(std::chrono::milliseconds(300));
+  ToolInput input;
+  input.position = input.restPoint.emplace(1.5, 1.5, 1.5);
+  const uint64_t stroke = loop.beginStroke(std::make_unique<PullStroke>(PullStroke::Settings{}), input);
+  input.restPoint.reset();
+  const Clock::time_point start = Clock::now();
+  Clock::time_point next = start;
+  int updates = 0;
+  while (Clock::now() - start < std::chrono::seconds(2)) {
+    input.position = Eigen::Vector3d(1.5 + 0.5 * seconds(Clock::now() - start), 1.5, 1.5);
+    loop.updateStroke(stroke, input);
+    ++updates;
+    next += std::chrono::milliseconds(1);
+    std::this_thread::sleep_until(next);
+  }
+  const double windowStart = seconds(start - origin), windowEnd = seconds(Clock::now() - origin);
+  const SceneProbe seen = probe->read();
+  loop.endStroke(stroke, input);
+
+  const std::lock_guard lock(mutex);
+  // The steps inside the window of updates and the simulated time they covered.
+  std::vector<size_t> inside;
+  for (size_t i = 0; i < stepWall.size(); ++i)
+    if (stepWall[i] >= windowStart && stepWall[i] <= windowEnd) inside.push_back(i);
+  ASSERT_GE(inside.size(), 10u);
+  const double simulated = stepSimulated[inside.back()] - stepSimulated[inside.front()];
+  const double wall = stepWall[inside.back()] - stepWall[inside.front()];
+  double shortest = 1e9;
+  for (size_t k = 1; k < inside.size(); ++k)
+    shortest = std::min(shortest, stepWall[inside[k]] - stepWall[inside[k - 1]]);
+  const double period = settings.timeStep / rate;
+  std::printf("[ measured ] %d updates in %.3f s; %zu steps; simulated %.4f s in %.4f s wall: "
+              "ratio %.4f (set %.2f); shortest step interval %.2f ms (period %.2f ms)\n",
+              updates, windowEnd - windowStart, inside.size(), simulated, wall, simulated / wall,
+              rate, 1e3 * shortest, 1e3 * period);
+  EXPECT_GT(updates, 1000);
+  EXPECT_NEAR(simulated / wall, rate, 0.1 * rate);
+  // A command never triggers a step: steps stay a period apart (a command-driven step would
+  // follow its predecessor within microseconds), and there are no more than the clock allows.
+  EXPECT_GT(shortest, 0.5 * period);
+  EXPECT_LE(static_cast<double>(inside.size()), wall / period + 2.0);
+  // The probe saw the stroke with the newest target the loop had applied.
+  ASSERT_EQ(seen.strokeCount, 1);
+  EXPECT_EQ(seen.strokes[0].strokeId, stroke);
+  EXPECT_GT(seen.strokes[0].target.x(), 2.3);
+  EXPECT_GT(seen.strokes[0].stiffness, 0.0);
+}
+
+TEST(SimulationLoop, ProbeIsReadFromAnotherThreadAt1kHz) {
+  SimulationLoop loop(true);
+  std::shared_ptr<ProbeChannel> probe = loop.openProbe();
+  std::atomic<uint64_t> observedSteps{0};
+  loop.addStepObserver([&](const StepState& state) { observedSteps = state.step; });
+  install(loop, blockPhysics(SceneSettings{}));
+  ToolInput input;
+  input.position = input.restPoint.emplace(1.5, 2.0, 1.5);
+  const uint64_t stroke = loop.beginStroke(std::make_unique<PullStroke>(PullStroke::Settings{}), input);
+
+  // The servo: 1,000 reads a second for a second, each O(1) and without a lock.
+  std::atomic<bool> ok{true};
+  std::atomic<int> reads{0}, distinct{0};
+  std::thread servo([&] {
+    uint64_t lastGeneration = 0;
+    double lastTime = 0.0;
+    Clock::time_point next = Clock::now();
+    for (int i = 0; i < 1000; ++i) {
+      const SceneProbe& p = probe->read();
+      if (p.generation < lastGeneration || p.simulatedTime < lastTime) ok = false;
+      if (p.generation > lastGeneration) {
+        ++distinct;
+        if (p.strokeCount != 1 || !p.strokes[0].point.allFinite() || !p.strokes[0].velocity.allFinite() ||
+            !(p.strokes[0].force >= 0.0))
+          ok = false;
+      }
+      lastGeneration = p.generation;
+      lastTime = p.simulatedTime;
+      ++reads;
+      next += std::chrono::milliseconds(1);
+      std::this_thread::sleep_until(next);
+    }
+  });
+  for (int i = 0; i < 100; ++i) {  // the UI moves the stroke meanwhile
+    input.position.x() += 0.005;
+    loop.updateStroke(stroke, input);
+    std::this_thread::sleep_for(std::chrono::milliseconds(10));
+  }
+  servo.join();
+  loop.endStroke(stroke, input);
+  std::printf("[ measured ] %d probe reads, %d distinct probes, %llu steps observed\n", reads.load(),
+              distinct.load(), static_cast<unsigned long long>(observedSteps.load()));
+  EXPECT_TRUE(ok);
+  EXPECT_EQ(reads, 1000);
+  // One probe per step (and the stroke's begin): at real time about 60 in the second.
+  EXPECT_GE(distinct, 20);
+  EXPECT_LE(static_cast<uint64_t>(distinct), observedSteps + 2);
+}
+
+TEST(SimulationLoop, ObserversSeeEveryStepAndCommandsWaitForTheStepBoundary) {
+  SimulationLoop loop(false);
+  std::vector<uint64_t> steps;
+  loop.addStepObserver([&](const StepState& state) {
+    steps.push_back(state.step);
+    EXPECT_NE(state.control, nullptr);
+    EXPECT_NE(state.report, nullptr);
+  });
+  install(loop, blockPhysics(SceneSettings{}));
+  ToolInput input;
+  input.position = input.restPoint.emplace(1.5, 1.5, 1.5);
+  const uint64_t stroke = loop.beginStroke(std::make_unique<PullStroke>(PullStroke::Settings{}), input);
+  for (int i = 0; i < 5; ++i) {
+    input.position.x() += 0.1;
+    loop.updateStroke(stroke, input);
+    loop.updateStroke(stroke, input);  // coalesced: one command per step
+  }
+  SceneFrame frame;
+  EXPECT_TRUE(loop.iterate());
+  ASSERT_TRUE(loop.fetchNewer(frame));
+  ASSERT_EQ(frame.springs.size(), 1u);
+  EXPECT_EQ(frame.springs[0].target.x(), input.position.x()) << "the newest input, once";
+  for (int i = 0; i < 4; ++i) loop.iterate();
+  EXPECT_EQ(steps, (std::vector<uint64_t>{1, 2, 3, 4, 5}));
+}
+
+}  // namespace
+}  // namespace sculpt
