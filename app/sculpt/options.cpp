@@ -10,6 +10,7 @@ const char* const kUsage =
     "usage: sculpt [options]\n"
     "  --scene FILE           control mesh (.json) or surface (.obj, .gltf, .glb) to simulate;\n"
     "                         default: the Stanford bunny in a hexahedral cage\n"
+    "  --dt S                 simulated seconds per step (default: the scene's, 1/60)\n"
     "  --script FILE          replay a session script (docs/file-formats.md) on the scene\n"
     "  --level K              simulation level (1..3)\n"
     "  --method M             phong | linear | vertex | attribute\n"
@@ -145,6 +146,9 @@ Options parseOptions(int argc, char** argv, bool* helpShown) {
           options.width < 64 || options.height < 64 || options.width > 8192 ||
           options.height > 8192)
         throw std::invalid_argument("--size must be WxH between 64 and 8192 (got '" + size + "')");
+    } else if (arg == "--dt") {
+      options.timeStep = positive(arg, value());
+      if (*options.timeStep > 10.0) throw std::invalid_argument("--dt must be at most 10 s");
     } else if (arg == "--quit-after") {
       options.quitAfter = positive(arg, value());
     } else if (arg == "--help" || arg == "-h") {

@@ -1,6 +1,6 @@
 #pragma once
 // The window's command line:
-//   sculpt [--scene FILE] [--level K] [--method M] [--field F] [--clip x|y|z] [--wireframe]
+//   sculpt [--scene FILE] [--level K] [--dt S] [--method M] [--field F] [--clip x|y|z] [--wireframe]
 //          [--show-cells] [--show-control] [--preset blender|stylus] [--ui-scale S]
 //          [--headless [--screenshot OUT.png] [--out FINAL.vtk] [--frames N] [--supersample 1|2|4] [--transparent]
 //           [--no-ui]] [--size WxH] [--quit-after SECONDS] [--bench N]
@@ -16,6 +16,7 @@ struct Options {
   std::string scene;  ///< control mesh (.json) or surface (.obj/.gltf/.glb); empty: the bunny
   std::string script;  ///< a session script to replay once the simulation runs
   std::optional<int> level;  ///< simulation level K
+  std::optional<double> timeStep;  ///< seconds per step (over the scene's or project's)
   DisplaySettings display;
   bool stylusPreset = false;
   bool showHelp = false;  ///< open the keys-and-mouse overlay at start

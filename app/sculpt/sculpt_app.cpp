@@ -77,7 +77,7 @@ SculptApp::SculptApp(GLFWwindow* window, const Options& options, Clock::time_poi
   model_.recentScenes = preferences_.recentFiles;
   model_.display = options.display;
   model_.preset = navigator_.preset();
-  if (options.level) model_.settings.level = *options.level;
+  applyCommandLineSettings();
   model_.sceneFile = options.scene;
   model_.showPanels = !options.noUi;
   model_.showHelp = options.showHelp;
@@ -134,6 +134,11 @@ SculptApp::~SculptApp() {
     ImGui_ImplGlfw_Shutdown();
     ImGui::DestroyContext();
   }
+}
+
+void SculptApp::applyCommandLineSettings() {
+  if (options_.level) model_.settings.level = *options_.level;
+  if (options_.timeStep) model_.settings.timeStep = *options_.timeStep;
 }
 
 void SculptApp::applyUiScale() { sculpt::app::applyUiScale(model_.uiScale); }

@@ -108,6 +108,7 @@ class SculptApp {
   std::string nextScreenshotPath() const;
   void loadScene(const std::string& path);
   void applyUiScale();
+  void applyCommandLineSettings();  // --level and --dt over the scene's own settings
   void reportFirstFrame();
   void savePreferencesOnClose();
   float viewAspect() const;

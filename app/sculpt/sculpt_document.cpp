@@ -70,6 +70,7 @@ void SculptApp::openProject(const std::filesystem::path& path, const std::filesy
   // Settings saved with the project
   model_.tools = loadToolState(project.tools);
   model_.settings = scene.settings;
+  if (from == options_.scene) applyCommandLineSettings();  // the project named on the command line
   const CameraState camera = project.camera;
   const bool recovered = from != path;
   document_.start(std::move(project), path, recovered);  // recovered work is unsaved work
