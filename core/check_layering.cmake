@@ -1,4 +1,4 @@
-# The layering check of core/ (docs/architecture-modules.md).
+# The layering check of core/ (docs/architecture.md).
 #
 # Every .h/.hpp/.cpp/.cc/.inl file under <root>/<folder>/ is scanned for #include lines:
 #  - "X/..." where X is another folder of the tree must name a folder among <folder>'s declared
@@ -149,7 +149,7 @@ function(sculpt_check_layering)
   if(_errors)
     list(LENGTH _errors _count)
     list(JOIN _errors "\n  " _text)
-    message(FATAL_ERROR "Layering check failed (${_count} problem(s), see docs/architecture-modules.md):\n  ${_text}\n")
+    message(FATAL_ERROR "Layering check failed (${_count} problem(s), see docs/architecture.md):\n  ${_text}\n")
   endif()
 endfunction()
 

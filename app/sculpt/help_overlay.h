@@ -1,5 +1,5 @@
 #pragma once
-// The help overlay (`?` or F1, ux.md Navigation): the mouse gestures of the current navigation
+// The help overlay (`?` or F1, docs/design/ux.md Navigation): the mouse gestures of the current navigation
 // preset and every key binding of the key map, grouped View / Simulation / Display / File.
 
 #include <string>

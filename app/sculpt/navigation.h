@@ -1,5 +1,5 @@
 #pragma once
-// How the keyboard and the mouse drive the window, as logic without a window (see ux.md,
+// How the keyboard and the mouse drive the window, as logic without a window (see docs/design/ux.md,
 // Navigation): a remappable key map with a text form for the preferences file, and the two mouse
 // presets that turn pointer input into camera motion or tool strokes.
 //
@@ -106,7 +106,7 @@ class KeyMap {
  public:
   /// An empty map.
   KeyMap() = default;
-  /// The bindings of ux.md (numpad views with top-row digit fallbacks, F, Home, ?, F1, ...).
+  /// The bindings of docs/design/ux.md (numpad views with top-row digit fallbacks, F, Home, ?, F1, ...).
   static KeyMap defaults();
 
   /// The action bound to key + modifiers (lock bits ignored), or nullopt.

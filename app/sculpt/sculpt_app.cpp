@@ -15,6 +15,7 @@
 #include "render/image_downsample.h"
 #include "render/offscreen_target.h"
 #include "render/png_image.h"
+#include "sculpt/app_clock.h"
 #include "sculpt/colour_bar.h"
 #include "sculpt/draw_benchmark.h"
 #include "sculpt/help_overlay.h"
@@ -29,19 +30,8 @@
 namespace sculpt::app {
 namespace {
 
-using Clock = std::chrono::steady_clock;
-
-// Autosave every five minutes of unsaved changes (ux.md "Files").
+// Autosave every five minutes of unsaved changes (docs/design/ux.md "Files").
 constexpr double kAutosaveIntervalS = 300.0;
-
-double secondsSince(Clock::time_point start) {
-  return std::chrono::duration<double>(Clock::now() - start).count();
-}
-
-void clearBackground(bool transparent) {
-  glClearColor(0.16f, 0.17f, 0.19f, transparent ? 0.0f : 1.0f);
-  glClear(GL_COLOR_BUFFER_BIT | GL_DEPTH_BUFFER_BIT);
-}
 
 int glfwModifiers(const ImGuiIO& io) {
   return (io.KeyShift ? GLFW_MOD_SHIFT : 0) | (io.KeyCtrl ? GLFW_MOD_CONTROL : 0) |
@@ -460,18 +450,6 @@ void SculptApp::loadScene(const std::string& path) {
   controller_->load(documentSource_, model_.settings);
 }
 
-std::string SculptApp::nextScreenshotPath() const {
-  const std::time_t now = std::time(nullptr);
-  char stamp[32];
-  std::strftime(stamp, sizeof stamp, "%Y%m%d-%H%M%S", std::localtime(&now));
-  std::filesystem::path path = std::filesystem::path(model_.screenshot.folder) /
-                               (std::string("sculpt-") + stamp + ".png");
-  for (int k = 2; std::filesystem::exists(path); ++k)
-    path = std::filesystem::path(model_.screenshot.folder) /
-           (std::string("sculpt-") + stamp + "-" + std::to_string(k) + ".png");
-  return path.string();
-}
-
 void SculptApp::drawScene(const ViewRect& view, int fbWidth, int fbHeight, float pixelScale) {
   // The 3D view's rectangle in framebuffer pixels (GL's origin is the bottom left).
   const int x = static_cast<int>(std::lround(view.min.x * pixelScale));
@@ -558,185 +536,6 @@ void SculptApp::savePreferencesOnClose() {
   } catch (const std::exception& error) {  // never lose the session over preferences
     std::cerr << "warning: preferences not saved: " << error.what() << '\n';
   }
-}
-
-void SculptApp::reportFirstFrame() {
-  firstFrameReported_ = true;
-  firstFrameSeconds_ = secondsSince(started_);
-  char text[160];
-  std::snprintf(text, sizeof text,
-                "first frame with the scene after %.2f s (window, OpenGL and UI ready after %.2f s, "
-                "scene data after %.2f s, GPU upload %.2f s)",
-                firstFrameSeconds_, windowReadySeconds_,
-                geometryArrivedSeconds_ - geometryUploadSeconds_, geometryUploadSeconds_);
-  std::cout << text << std::endl;
-}
-
-void SculptApp::writeScreenshot(const std::string& path, const ScreenshotSettings& settings) {
-  const int s = settings.supersample;
-  const float pixelScale = ImGui::GetIO().DisplayFramebufferScale.x;
-  const bool panels = settings.includePanels && !options_.noUi;
-  // Without panels the image is the 3D view alone, at its framebuffer size.
-  ViewRect view = lastView_;
-  int width = lastFbWidth_, height = lastFbHeight_;
-  if (!panels) {
-    width = static_cast<int>(std::lround((view.max.x - view.min.x) * pixelScale));
-    height = static_cast<int>(std::lround((view.max.y - view.min.y) * pixelScale));
-    view = {ImVec2(0, 0), ImVec2(view.max.x - view.min.x, view.max.y - view.min.y)};
-  }
-  render::OffscreenTarget target(width * s, height * s);
-  target.bind();
-  glViewport(0, 0, width * s, height * s);
-  clearBackground(settings.transparent);
-  drawScene(view, width * s, height * s, pixelScale * static_cast<float>(s));
-  if (panels) {
-    ImDrawData* drawData = ImGui::GetDrawData();
-    const ImVec2 saved = drawData->FramebufferScale;
-    drawData->FramebufferScale = ImVec2(saved.x * static_cast<float>(s), saved.y * static_cast<float>(s));
-    glViewport(0, 0, width * s, height * s);
-    ImGui_ImplOpenGL3_RenderDrawData(drawData);
-    drawData->FramebufferScale = saved;
-  }
-  std::vector<uint8_t> pixels = target.readPixels();
-  glBindFramebuffer(GL_FRAMEBUFFER, 0);
-  if (s > 1) pixels = render::downsample(pixels, width * s, height * s, s);
-  if (!settings.transparent)
-    for (size_t i = 3; i < pixels.size(); i += 4) pixels[i] = 255;
-  const std::filesystem::path parent = std::filesystem::path(path).parent_path();
-  if (!parent.empty()) std::filesystem::create_directories(parent);
-  render::writePng(path, width, height, pixels);
-}
-
-int SculptApp::runWindow() {
-  // --quit-after counts from the first frame with the scene (or from a failed build), so that a
-  // slow machine or a sanitizer build still shows the scene before closing.
-  std::optional<Clock::time_point> quitClockStart;
-  // Frames are drawn while something changes (a new simulation state, input, a build) and a few
-  // more after it (ImGui settles hover states); otherwise the loop sleeps until an event or a
-  // short timeout, so that an idle window leaves the CPU to the builder and the simulation.
-  int busyFrames = 3;
-  while (!glfwWindowShouldClose(window_)) {
-    if (options_.quitAfter > 0.0) {
-      if (!quitClockStart && (firstFrameReported_ || !model_.status.build.error.empty()))
-        quitClockStart = Clock::now();
-      if (quitClockStart && secondsSince(*quitClockStart) > options_.quitAfter)
-        glfwSetWindowShouldClose(window_, 1);
-    }
-    if (busyFrames > 0) {
-      glfwPollEvents();
-    } else {
-      const double timeout = 0.25;
-      const double before = glfwGetTime();
-      glfwWaitEventsTimeout(timeout);
-      if (glfwGetTime() - before < 0.9 * timeout) busyFrames = 3;  // woken by an event
-    }
-    int width = 0, height = 0;
-    glfwGetFramebufferSize(window_, &width, &height);
-    if (width <= 0 || height <= 0) {  // minimised
-      glfwWaitEventsTimeout(0.1);
-      continue;
-    }
-    glBindFramebuffer(GL_FRAMEBUFFER, 0);
-    sceneChanged_ = false;
-    frame(width, height, true);
-    glfwSwapBuffers(window_);
-    busyFrames = sceneChanged_ || !model_.toasts.empty() ? 3 : busyFrames - 1;
-  }
-  return 0;
-}
-
-void SculptApp::headlessFrame(const std::string& screenshot) {
-  int width = 0, height = 0;
-  glfwGetFramebufferSize(window_, &width, &height);
-  render::OffscreenTarget target(width, height);
-  target.bind();
-  frame(width, height, false);
-  glFinish();
-  if (!screenshot.empty()) {
-    ScreenshotSettings settings = model_.screenshot;
-    settings.includePanels = !options_.noUi;
-    writeScreenshot(screenshot, settings);
-  }
-  glBindFramebuffer(GL_FRAMEBUFFER, 0);
-}
-
-int SculptApp::runHeadless() {
-  int width = 0, height = 0;
-  glfwGetFramebufferSize(window_, &width, &height);
-  render::OffscreenTarget target(width, height);
-  for (int k = 0; k < options_.frames; ++k) {
-    target.bind();
-    frame(width, height, false);
-    const BuildStatus build = controller_->buildStatus();
-    if (!build.error.empty() && !view_.hasGeometry()) {
-      std::cerr << "error: " << build.error << '\n';
-      return 2;
-    }
-  }
-  glFinish();
-  if (!options_.out.empty()) {
-    if (!view_.hasGeometry() || !view_.geometry()->controlMesh) {
-      std::cerr << "error: no scene to write to " << options_.out << '\n';
-      return 2;
-    }
-    writeDeformedControlVtk(*view_.geometry()->controlMesh, latest_.control, options_.out);
-    std::cout << "wrote " << options_.out << " (" << latest_.control.rows()
-              << " control points, simulated " << latest_.simulatedTime << " s)\n";
-  }
-  if (options_.screenshot.empty()) return 0;
-  ScreenshotSettings settings = model_.screenshot;
-  settings.includePanels = !options_.noUi;
-  writeScreenshot(options_.screenshot, settings);
-  std::cout << "wrote " << options_.screenshot << " (" << width << "x" << height << ", "
-            << options_.frames << " frames, " << model_.status.triangles << " triangles, "
-            << model_.status.description << ", simulated " << model_.status.simulatedTime
-            << " s)\n";
-  return 0;
-}
-
-}  // namespace sculpt::app
-
-namespace sculpt::app {
-
-int SculptApp::runBenchmark() {
-  int width = 0, height = 0;
-  glfwGetFramebufferSize(window_, &width, &height);
-  render::OffscreenTarget target(width, height);
-  std::vector<double> frameMs, stepMs, uploadMs;
-  for (int k = 0; k < options_.benchFrames; ++k) {
-    target.bind();
-    const auto start = Clock::now();
-    frame(width, height, false);
-    glFinish();
-    frameMs.push_back(std::chrono::duration<double, std::milli>(Clock::now() - start).count());
-    stepMs.push_back(latest_.stepMs);
-    uploadMs.push_back(view_.lastUploadMs());
-    if (!view_.hasGeometry()) {
-      std::cerr << "error: " << controller_->buildStatus().error << '\n';
-      return 2;
-    }
-  }
-  const auto median = [](std::vector<double> v) {
-    std::sort(v.begin(), v.end());
-    return v.empty() ? 0.0 : v[v.size() / 2];
-  };
-  target.bind();
-  const float aspect = viewAspect();
-  const DrawMeasurement draw =
-      measureDrawing(*view_.deformer(), view_.frame().nodes, view_.frame().gradients,
-                     model_.display.method, view_.geometry()->triangles, camera_.view(),
-                     camera_.projection(aspect), 15);
-  const SceneGeometry& g = *view_.geometry();
-  for (const auto& [stage, ms] : controller_->buildStatus().stageMs) std::cout << "stage " << stage << ": " << ms << " ms\n";
-  std::cout << "first_frame_s=" << firstFrameSeconds_ << " frames=" << options_.benchFrames
-            << " size=" << width << "x" << height << " triangles=" << view_.numTriangles()
-            << " vertices=" << g.restPositions.rows() << " nodes=" << g.cellMesh.numNodes()
-            << " cells=" << g.cellMesh.numCells() << " upload_bytes=" << view_.lastUploadBytes()
-            << " cpu_path_bytes=" << 24 * g.restPositions.rows()
-            << " upload_ms=" << median(uploadMs) << " step_ms=" << median(stepMs)
-            << " frame_ms=" << median(frameMs) << " deformed_draw_ms=" << draw.deformedMs
-            << " static_draw_ms=" << draw.staticMs << " draw_ratio=" << draw.ratio() << '\n';
-  return 0;
 }
 
 }  // namespace sculpt::app

@@ -292,7 +292,7 @@ void SculptApp::topologyClick(const PointerResult& stroke, float x, float y, int
 }
 
 std::vector<FaceRef> SculptApp::withMirroredFaces(const std::vector<FaceRef>& faces) const {
-  // ux.md: symmetry applies to topology tools too, inside one undo step. The image of a face is
+  // docs/design/ux.md: symmetry applies to topology tools too, inside one undo step. The image of a face is
   // the boundary face whose centroid is the reflection of its centroid (when there is one).
   const ToolState& t = model_.tools;
   const CellComplex& mesh = document_.project().controlMesh;
@@ -396,7 +396,7 @@ void SculptApp::applyTopology(const std::vector<FaceRef>& picked) {
 }
 
 bool SculptApp::brushKeys(const ImGuiIO& io, float dx) {
-  // F + drag sets the radius and Shift+F + drag the strength (ux.md); F alone still frames.
+  // F + drag sets the radius and Shift+F + drag the strength (docs/design/ux.md); F alone still frames.
   ToolState& t = model_.tools;
   if (brushKey_ < 0) {
     if (!isBrushTool(t.tool) || io.WantCaptureKeyboard || !ImGui::IsKeyPressed(GLFW_KEY_F, false) ||

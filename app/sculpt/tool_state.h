@@ -1,5 +1,5 @@
 #pragma once
-// The sculpting tools as the left panel edits them (ux.md "Brushes", "Material painting"), and
+// The sculpting tools as the left panel edits them (docs/design/ux.md "Brushes", "Material painting"), and
 // their round trip through a project's tool settings (saved with the project, never undo
 // entries).
 //
@@ -33,7 +33,7 @@ bool needsTwoFaces(TopologyTool operation);
 
 struct ToolState {
   ToolKind tool = ToolKind::Pull;
-  // Brush (ux.md: radius in screen pixels)
+  // Brush (docs/design/ux.md: radius in screen pixels)
   float radiusPixels = 50.0f;
   float strength = 0.5f;  ///< [0, 1]: how far a dab moves a sample to the target; pin ignores it
   Falloff falloff = Falloff::Smooth;

@@ -1,5 +1,5 @@
 #pragma once
-// HiDPI (ux.md, Feedback): one UI scale from the monitor's content scale
+// HiDPI (docs/design/ux.md, Feedback): one UI scale from the monitor's content scale
 // (glfwGetWindowContentScale) or the user's saved override, applied by loading the font at the
 // scaled size and scaling the style's sizes (sharper than ImGui's FontGlobalScale).
 

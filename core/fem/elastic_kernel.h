@@ -1,5 +1,5 @@
 #pragma once
-// Co-rotated linear elasticity on the elements of a FemMesh (local-frame-fem.md).
+// Co-rotated linear elasticity on the elements of a FemMesh (docs/design/local-frame-fem.md).
 //
 // Per element a rotation R_e (polar decomposition of F at the element centre). With the
 // rotations held fixed the energy

@@ -1,5 +1,5 @@
 #pragma once
-// External loads as forms (local-frame-fem.md "Loads and constraints"): a force at any material
+// External loads as forms (docs/design/local-frame-fem.md "Loads and constraints"): a force at any material
 // point, a penalty spring from a material point to a target (mouse or stylus pull), pressure on
 // the boundary (inflate, deflate) and penalty contact with a ground half-space.
 //

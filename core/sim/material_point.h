@@ -1,7 +1,7 @@
 #pragma once
 // Points of the material: an element of the FemMesh and local coordinates in it. A material
 // point moves with the solid, so loads and constraints can be attached anywhere (the paper only
-// attaches them to Gauss points; local-frame-fem.md "Loads and constraints").
+// attaches them to Gauss points; docs/design/local-frame-fem.md "Loads and constraints").
 //
 // The position of a point is a fixed linear combination of the nodes (the element's shape
 // functions at its local coordinates) and therefore of the control points (composed with the

@@ -137,7 +137,7 @@ StencilTable buildStencils(const Topology& t) {
 }
 
 // Child cells (§4.1): one per (cell, corner), k quads around the vertex point and k around the
-// cell point, oriented by the recipe of mj-subdivision.md §4.1.
+// cell point, oriented by the recipe of docs/design/mj-subdivision.md §4.1.
 CellComplex buildChildCells(const Topology& t) {
   const uint32_t V = t.numVertices, E = t.numEdges(), F = t.numFaces();
   auto vertexPoint = [](uint32_t v) { return v; };

@@ -1,5 +1,5 @@
 #pragma once
-// MacCracken–Joy refinement of a cell complex (design/mj-subdivision.md): interior rules from old
+// MacCracken–Joy refinement of a cell complex (docs/design/mj-subdivision.md): interior rules from old
 // positions, Catmull–Clark rules on the boundary surface, crease and corner tags inherited.
 //
 // Child vertex numbering of one step (level k -> k+1), with V, E, F, C the level-k counts:

@@ -1,5 +1,5 @@
 #pragma once
-// Regularity of level-k cells (mj-subdivision.md §6.1) and the 4x4x4 control block of a regular
+// Regularity of level-k cells (docs/design/mj-subdivision.md §6.1) and the 4x4x4 control block of a regular
 // cell in a consistent (u, v, w) frame.
 
 #include <array>

@@ -1,5 +1,5 @@
 #pragma once
-// Material painting (ux.md "Brushes" and "Material painting", McDonnell-Qin section 4.1
+// Material painting (docs/design/ux.md "Brushes" and "Material painting", McDonnell-Qin section 4.1
 // stiffness and mass painting): Young's modulus, density and damping in physical units, painted
 // into the Gauss samples of the volume by a sphere brush with a falloff, a strength and mirror
 // symmetry; an eyedropper reads the material back.

@@ -1,5 +1,5 @@
 #pragma once
-// Pin / unpin (issue 6): fixes or frees the control points whose rest position lies in a box or
+// Pin / unpin: fixes or frees the control points whose rest position lies in a box or
 // a sphere (Simulator::setFixed; a pinned point keeps its current position and loses its
 // velocity). The window paints with the sphere; scripts and the CLI use boxes.
 

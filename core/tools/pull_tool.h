@@ -1,5 +1,5 @@
 #pragma once
-// Pull / push (ux.md "Brushes", McDonnell-Qin section 4.1): a zero-length spring
+// Pull / push (docs/design/ux.md "Brushes", McDonnell-Qin section 4.1): a zero-length spring
 // (PenaltySpringForm) from a grabbed material point to a target that the mouse or a stylus
 // moves. Push is the same spring with the drag reflected through the grab position (Ctrl in the
 // window): target = anchor - (cursor - anchor), anchor being where the point was when grabbed.

@@ -1,5 +1,5 @@
 #pragma once
-// Session scripts (issue 6; docs/file-formats.md "Session script"): a JSON list of timed tool
+// Session scripts (docs/file-formats.md "Session script"): a JSON list of timed tool
 // events (grab and drag along a path, inflate for a while, paint a sphere, pin a box) that
 // ScriptPlayer replays on a Simulator as simulated time passes. Replay is deterministic: the
 // same script on the same model and settings gives the same control points bit for bit.

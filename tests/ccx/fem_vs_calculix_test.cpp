@@ -1,6 +1,6 @@
 // Small-displacement statics of our --trilinear mode against CalculiX (C3D8, full 2x2x2 Gauss
 // integration) on the same hexahedral mesh, built and compared inside the test: every nodal
-// displacement must agree to 1e-6 of the largest one (local-frame-fem.md, "Proof").
+// displacement must agree to 1e-6 of the largest one (docs/design/local-frame-fem.md, "Proof").
 //
 // Both sides discretise the same problem with the same element: trilinear 8-node hexahedra,
 // K_e = sum over 2x2x2 Gauss points of B^T C B det J on the true isoparametric map, the same

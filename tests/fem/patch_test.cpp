@@ -1,4 +1,4 @@
-// Patch tests (local-frame-fem.md, "Proof"): an affine deformation x = F X + t of a distorted
+// Patch tests (docs/design/local-frame-fem.md, "Proof"): an affine deformation x = F X + t of a distorted
 // trilinear mesh gives the same strain at every Gauss point, so
 //   - the energy is V (mu eps:eps + lambda/2 tr(eps)^2) with V the exact volume,
 //   - nodes off the boundary get no force (constant stress is in equilibrium),

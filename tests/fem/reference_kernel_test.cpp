@@ -1,5 +1,5 @@
 // The optimised kernels (sum factorisation, packed and vectorised Gauss points) against a
-// deliberately naive re-implementation written from the formulas of local-frame-fem.md:
+// deliberately naive re-implementation written from the formulas of docs/design/local-frame-fem.md:
 //   E = sum_e sum_q w_q det J_q (mu eps:eps + lambda/2 tr(eps)^2),  eps = sym(R_e^T F_q) - I,
 //   F_q = sum_n x_n (x) grad N_n,  grad N_n = J_q^-T grad_xi N_n,  J_q = sum_n X_n (x) grad_xi N_n,
 // with its own B-spline and trilinear shape functions, its own Gauss abscissae (closed forms)

@@ -1,7 +1,7 @@
 // Mouse presets and the key map (app/sculpt/navigation.h) as pure logic: each preset's gestures
 // move the camera the documented way and by the documented amount, ImGui's capture blocks
 // everything, a double click asks for a pivot and never strokes; the default key map holds the
-// bindings of ux.md without clashes and survives its text form.
+// bindings of docs/design/ux.md without clashes and survives its text form.
 
 #include <gtest/gtest.h>
 
@@ -354,7 +354,7 @@ TEST(KeyMap, DefaultsHoldTheBindingsOfUx) {
   EXPECT_EQ(keys.actionFor(GLFW_KEY_F, GLFW_MOD_CAPS_LOCK), Action::FrameModel);
   EXPECT_FALSE(keys.actionFor(GLFW_KEY_Q, 0).has_value());
   EXPECT_FALSE(keys.actionFor(GLFW_KEY_F, GLFW_MOD_ALT).has_value());
-  // ux.md "Undo" and "Files": Ctrl+Z, Ctrl+Shift+Z (and Ctrl+Y), Ctrl+S; [ and ] step the brush.
+  // docs/design/ux.md "Undo" and "Files": Ctrl+Z, Ctrl+Shift+Z (and Ctrl+Y), Ctrl+S; [ and ] step the brush.
   EXPECT_EQ(keys.actionFor(GLFW_KEY_Z, GLFW_MOD_CONTROL), Action::Undo);
   EXPECT_EQ(keys.actionFor(GLFW_KEY_Z, GLFW_MOD_CONTROL | GLFW_MOD_SHIFT), Action::Redo);
   EXPECT_EQ(keys.actionFor(GLFW_KEY_Y, GLFW_MOD_CONTROL), Action::RedoAlternative);

@@ -1,4 +1,4 @@
-// The window driven like a person would (issue 6, point 5): the real SculptApp, offscreen and
+// The window driven like a person would: the real SculptApp, offscreen and
 // deterministic (simulation stepped once per frame), with mouse and keys fed through ImGui's IO.
 // It pulls the bunny, paints a stiff ear, extrudes a face of the cage and undoes it, checking the
 // effect of each step on the scene and on the project. With SCULPT_SESSION_IMAGES set to a

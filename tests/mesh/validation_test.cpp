@@ -1,4 +1,4 @@
-// Issue 2 §2 / "Done when" point 4: validation reports every defect with its kind, the element
+// Validation reports every defect with its kind, the element
 // index and a sentence naming the element.
 
 #include "mesh/validation.h"

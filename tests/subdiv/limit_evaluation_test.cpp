@@ -1,4 +1,4 @@
-// Issue 2, "Done when" point 3 (mj-subdivision.md §6.1): regular-cell limit evaluation is
+// (docs/design/mj-subdivision.md §6.1): regular-cell limit evaluation is
 // consistent with refinement. The tricubic patch of a regular cell at its children's corner
 // parameters equals those vertices' limit positions, and each child's patch equals the parent's
 // patch on the child's parameter box. Also: the limit mask, the convergence of iterated MJ to it,

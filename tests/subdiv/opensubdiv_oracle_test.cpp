@@ -1,4 +1,4 @@
-// Issue 2, "Done when" point 2 (mj-subdivision.md §5.4, §7.4): the boundary of the MJ-refined
+// (docs/design/mj-subdivision.md §5.4, §7.4): the boundary of the MJ-refined
 // lattice at levels 1..3 equals OpenSubdiv's Catmull–Clark refinement of the level-0 boundary
 // (Sdc::SCHEME_CATMARK, creases as infinitely sharp edges, corners as infinitely sharp vertices),
 // point for point, to 1e-12 of the bounding-box diagonal (support/opensubdiv_oracle.h).
