@@ -149,35 +149,32 @@ void SimulationLoop::queue(Command command) {
   wake_.notify_all();  // while playing, the loop does not act on it before the next step
 }
 
+void SimulationLoop::queueStroke(int kind, uint64_t stroke, std::unique_ptr<Tool> tool,
+                                 const ToolInput& input) {
+  Command command;
+  command.kind = static_cast<Command::Kind>(kind);
+  command.stroke = stroke;
+  command.tool = std::move(tool);
+  command.input = input;
+  queue(std::move(command));
+}
+
 uint64_t SimulationLoop::beginStroke(std::unique_ptr<Tool> tool, const ToolInput& input) {
   uint64_t id = 0;
   {
     const std::lock_guard lock(mutex_);
     id = ++nextStroke_;
   }
-  Command command;
-  command.kind = Command::Begin;
-  command.stroke = id;
-  command.tool = std::move(tool);
-  command.input = input;
-  queue(std::move(command));
+  queueStroke(Command::Begin, id, std::move(tool), input);
   return id;
 }
 
 void SimulationLoop::updateStroke(uint64_t stroke, const ToolInput& input) {
-  Command command;
-  command.kind = Command::Update;
-  command.stroke = stroke;
-  command.input = input;
-  queue(std::move(command));
+  queueStroke(Command::Update, stroke, nullptr, input);
 }
 
 void SimulationLoop::endStroke(uint64_t stroke, const ToolInput& input) {
-  Command command;
-  command.kind = Command::End;
-  command.stroke = stroke;
-  command.input = input;
-  queue(std::move(command));
+  queueStroke(Command::End, stroke, nullptr, input);
 }
 
 void SimulationLoop::playScript(SessionScript script) {

@@ -127,6 +127,7 @@ class SimulationLoop {
     std::function<std::string(ScenePhysics&)> other;  // returns a problem sentence or ""
   };
   void queue(Command command);
+  void queueStroke(int kind, uint64_t stroke, std::unique_ptr<Tool> tool, const ToolInput& input);
   bool runIteration();  // the simulation thread's (or iterate()'s) work
   void publishProbe(ScenePhysics& physics);
   void notifyStep(ScenePhysics& physics, const StepReport& report);
