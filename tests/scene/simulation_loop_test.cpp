@@ -93,9 +93,9 @@ TEST(SimulationLoop, StepsAtTheSetRateWhileAToolIsUpdatedAt1kHz) {
               rate, 1e3 * shortest, 1e3 * period);
   EXPECT_GT(updates, 1000);
   EXPECT_NEAR(simulated / wall, rate, 0.1 * rate);
-  // A command never triggers a step: steps stay a period apart (a command-driven step would
-  // follow its predecessor within microseconds), and there are no more than the clock allows.
-  EXPECT_GT(shortest, 0.5 * period);
+  // A command never triggers a step: over 2,000 commands there are no more steps than the clock
+  // allows (the shortest interval is printed only: on a loaded machine a late step is followed
+  // at once by the next one that is due).
   EXPECT_LE(static_cast<double>(inside.size()), wall / period + 2.0);
   // The probe saw the stroke with the newest target the loop had applied.
   ASSERT_EQ(seen.strokeCount, 1);
@@ -114,6 +114,11 @@ TEST(SimulationLoop, ProbeIsReadFromAnotherThreadAt1kHz) {
   input.position = input.restPoint.emplace(1.5, 2.0, 1.5);
   const uint64_t stroke = loop.beginStroke(std::make_unique<PullStroke>(PullStroke::Settings{}), input);
 
+  // The servo starts once the stroke is in the probe (the scene's first step may come before it).
+  const auto deadline = Clock::now() + std::chrono::seconds(30);
+  while (probe->read().strokeCount != 1 && Clock::now() < deadline)
+    std::this_thread::sleep_for(std::chrono::milliseconds(1));
+  ASSERT_EQ(probe->read().strokeCount, 1);
   // The servo: 1,000 reads a second for a second, each O(1) and without a lock.
   std::atomic<bool> ok{true};
   std::atomic<int> reads{0}, distinct{0};
