@@ -29,6 +29,8 @@ class ElasticKernel {
   /// R_e = I for every element: plain small-strain linear elasticity.
   void resetRotations();
   const std::vector<Eigen::Matrix3d>& rotations() const { return rotations_; }
+  /// Puts back rotations taken with rotations() (the warm start of the next update).
+  void setRotations(const std::vector<Eigen::Matrix3d>& rotations) { rotations_ = rotations; }
 
   /// E(nodes) with the current rotations.
   double energy(const Points& nodes) const;

@@ -218,10 +218,17 @@ double Simulator::kineticEnergy() const {
 }
 
 double Simulator::elasticEnergy() {
+  // A query: the rotations it finds must not become the next step's warm start. Otherwise
+  // asking (a progress line about once a second of wall time) changes the last bits of every
+  // later step, and the same run gives different results depending on how fast it ran.
+  ElasticKernel& kernel = model_.elastic();
+  const std::vector<Eigen::Matrix3d> warmStart = kernel.rotations();
   refreshNodes(position_);
   const FormState state{position_, scratchNodes_};
   elastic_->prepare(state);
-  return elastic_->energy(state);
+  const double energy = elastic_->energy(state);
+  kernel.setRotations(warmStart);
+  return energy;
 }
 
 double Simulator::loadEnergy() {
