@@ -13,6 +13,8 @@ int runStaticCommand(const std::vector<std::string>& args);
 int runSimulateCommand(const std::vector<std::string>& args);
 int runDeformCommand(const std::vector<std::string>& args);
 int runStudyCommand(const std::vector<std::string>& args);
+int runDevicesCommand(const std::vector<std::string>& args);
+int runHapticsCommand(const std::vector<std::string>& args);
 
 /// One-paragraph usage of each subcommand (shown by `--help` and in the main usage).
 extern const char* const kInfoUsage;
@@ -22,5 +24,7 @@ extern const char* const kStaticUsage;
 extern const char* const kSimulateUsage;
 extern const char* const kDeformUsage;
 extern const char* const kStudyUsage;
+extern const char* const kDevicesUsage;
+extern const char* const kHapticsUsage;
 
 }  // namespace sculpt::cli

@@ -3,17 +3,16 @@
 // without touching the simulation: per stroke acting now, its material point's position and
 // velocity, its target, spring stiffness and force; the simulated time; a generation number.
 //
-// ProbeChannel hands it from the simulation thread to one reader through three fixed slots (a
-// triple buffer): publish() fills the writer's slot and swaps it with the middle one, read()
-// swaps the middle one with the reader's when it is newer. Both are wait-free and O(1) (one
-// atomic exchange; no lock, no allocation, no copy of the nodes), so neither side ever waits
-// for the other. Each reader opens its own channel.
+// ProbeChannel hands it from the simulation thread to one reader through a triple buffer
+// (util/triple_buffer.h): wait-free and O(1) on both sides, no copy of the nodes. Each reader
+// opens its own channel.
 
 #include <array>
-#include <atomic>
 #include <cstdint>
 
 #include <Eigen/Core>
+
+#include "util/triple_buffer.h"
 
 namespace sculpt {
 
@@ -27,6 +26,8 @@ struct ProbeStroke {
   Eigen::Vector3d target = Eigen::Vector3d::Zero();    ///< spring target (m)
   double stiffness = 0.0;                              ///< N/m (0: the stroke has no spring)
   double force = 0.0;                                  ///< N, k |point - target|
+  /// Non-zero for a contact (ToolSpring::normal): the outward surface normal (unit).
+  Eigen::Vector3d normal = Eigen::Vector3d::Zero();
 };
 
 struct SceneProbe {
@@ -34,29 +35,14 @@ struct SceneProbe {
   uint64_t sceneId = 0;
   uint64_t steps = 0;        ///< steps taken on this scene since it started
   double simulatedTime = 0;  ///< s since the last reset
+  /// std::chrono::steady_clock time of publication (ns since its epoch): a reader's age of the
+  /// data, whatever its own update rate.
+  int64_t publishedNs = 0;
   int strokeCount = 0;       ///< strokes acting now (may exceed kProbeStrokes)
   std::array<ProbeStroke, kProbeStrokes> strokes{};
 };
 
-class ProbeChannel {
- public:
-  /// Simulation thread: makes `probe` the newest.
-  void publish(const SceneProbe& probe) {
-    slots_[writer_] = probe;
-    writer_ = middle_.exchange(writer_ | kFresh, std::memory_order_acq_rel) & kIndex;
-  }
-  /// Reader thread: the newest probe published (generation 0 before the first).
-  const SceneProbe& read() {
-    if (middle_.load(std::memory_order_relaxed) & kFresh)
-      reader_ = middle_.exchange(reader_, std::memory_order_acq_rel) & kIndex;
-    return slots_[reader_];
-  }
-
- private:
-  static constexpr unsigned kIndex = 3, kFresh = 4;
-  std::array<SceneProbe, 3> slots_{};
-  unsigned writer_ = 0, reader_ = 1;  // each touched by its own thread only
-  std::atomic<unsigned> middle_{2};
-};
+/// One reader's channel (util/triple_buffer.h).
+using ProbeChannel = TripleBuffer<SceneProbe>;
 
 }  // namespace sculpt

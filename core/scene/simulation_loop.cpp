@@ -252,6 +252,9 @@ void SimulationLoop::publishProbe(ScenePhysics& physics) {
   probe.sceneId = physics.geometry().sceneId;
   probe.steps = steps_;
   probe.simulatedTime = physics.simulatedTime();
+  probe.publishedNs = std::chrono::duration_cast<std::chrono::nanoseconds>(
+                          std::chrono::steady_clock::now().time_since_epoch())
+                          .count();
   probe.strokeCount = static_cast<int>(springs.size());
   for (size_t i = 0; i < springs.size() && i < probe.strokes.size(); ++i) {
     const ToolSpring& spring = springs[i].second;
@@ -262,6 +265,7 @@ void SimulationLoop::publishProbe(ScenePhysics& physics) {
     out.target = spring.target;
     out.stiffness = spring.stiffness;
     out.force = spring.stiffness * (spring.point - spring.target).norm();
+    out.normal = spring.normal;
   }
   for (const std::shared_ptr<ProbeChannel>& channel : channels) channel->publish(probe);
 }

@@ -57,6 +57,10 @@ struct ToolSpring {
   double stiffness = 0.0;                              ///< N/m
   /// k |x - target| (N); NaN where the tool does not label it (the curve's many springs).
   double force = std::numeric_limits<double>::quiet_NaN();
+  /// Zero for a spring that pulls both ways. Non-zero for a contact, the outward unit normal of
+  /// the surface at `point`: the spring acts only while the target is inside, (target - point)
+  /// . normal < 0 (a stylus pressing on the surface).
+  Eigen::Vector3d normal = Eigen::Vector3d::Zero();
 };
 
 /// Which part of the user's work a tool edits: such a stroke becomes one undo entry.
