@@ -18,6 +18,7 @@
 #include "cli/cli_common.h"
 #include "cli/commands.h"
 #include "cli/fem_options.h"
+#include "cli/scene_options.h"
 #include "io/control_mesh_json.h"
 #include "sim/standard_forms.h"
 #include "tools/script_topology.h"
@@ -201,36 +202,12 @@ int stepsFor(const CliArgs& args, const std::optional<SessionScript>& script, do
 
 // A surface or a project, built and run by the scene pipeline the window uses (core/scene).
 int simulateScene(const CliArgs& args, const std::string& file, const std::string& out) {
-  for (const char* option : {"trilinear", "E", "nu", "density", "damping", "fix", "force", "gravity"})
-    if (args.has(option))
-      throw UsageError(std::string("--") + option +
-                       " is for control meshes; a scene brings its own (save them in its project)");
-  SceneSettings settings;
-  SceneSource source = sceneSourceFor(file);
-  if (isProjectPath(file)) {
-    ProjectScene scene = projectScene(loadProject(file), file,
-                                      std::filesystem::path(file).filename().string(), settings);
-    for (const std::string& warning : scene.warnings) std::cerr << "simulate: " << warning << '\n';
-    source = std::move(scene.source);
-    settings = scene.settings;
-  }
-  if (args.has("levels")) settings.level = args.intValue("levels", 1, 1, 3);
-  if (args.has("cage")) settings.cageCellsAcross = args.intValue("cage", 6, 1, 64);
-  if (args.has("integrator") || args.has("dt")) {
-    const SimulationSettings given = parseIntegratorAndStep(args, false);
-    if (args.has("integrator")) settings.integrator = given.integrator;
-    if (args.has("dt")) settings.timeStep = given.timeStep;
-  }
-  std::optional<SessionScript> script;
-  if (args.has("script")) script = loadSessionScript(args.requiredValue("script"));
-  if (script)
-    for (const ScriptEvent& event : script->events)
-      if (std::holds_alternative<TopologyEvent>(event.action))
-        return printError(args.requiredValue("script") +
-                          ": topology events edit a control mesh; run them on the .json file");
+  CliScene scene = cliSceneFor(args, file, "simulate");
+  const SceneSettings& settings = scene.settings;
+  std::optional<SessionScript>& script = scene.script;
   const int steps = stepsFor(args, script, settings.timeStep, 1);
 
-  std::optional<SceneBuildPhase1> phase1 = buildSceneGeometry(source, settings, 1);
+  std::optional<SceneBuildPhase1> phase1 = buildSceneGeometry(scene.source, settings, 1);
   StageTimes times;
   std::unique_ptr<ScenePhysics> physics =
       ScenePhysics::build(phase1->geometry, phase1->solid, settings, nullptr, &times);

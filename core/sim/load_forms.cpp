@@ -127,13 +127,13 @@ void PenaltySpringForm::addHessianProduct(const FormState&, const FormState& dx,
 
 // ---------------------------------------------------------------------------------------------
 
-PressureForm::PressureForm(const FemModel& model, double pressure, const SphereRegion& region)
-    : pressure_(0.0) {
-  setPressure(pressure);
+std::vector<std::array<uint32_t, 3>> boundaryTriangles(const FemModel& model,
+                                                       const SphereRegion& region) {
   checkVector(region.centre, "pressure", "region centre");
   if (std::isnan(region.radius) || region.radius < 0)
     reject("pressure: the region radius " + text(region.radius) +
            " m must be non-negative (infinity for the whole boundary).");
+  std::vector<std::array<uint32_t, 3>> triangles;
   const CellComplex& cells = model.subdivision().finest();
   const Topology& topology = model.subdivision().finestTopology();
   const bool everywhere = std::isinf(region.radius);
@@ -150,8 +150,15 @@ PressureForm::PressureForm(const FemModel& model, double pressure, const SphereR
       centroid /= static_cast<double>(loop.size());
       if ((centroid - region.centre).norm() > region.radius) continue;
     }
-    for (size_t i = 1; i + 1 < loop.size(); ++i) triangles_.push_back({loop[0], loop[i], loop[i + 1]});
+    for (size_t i = 1; i + 1 < loop.size(); ++i) triangles.push_back({loop[0], loop[i], loop[i + 1]});
   }
+  return triangles;
+}
+
+PressureForm::PressureForm(const FemModel& model, double pressure, const SphereRegion& region)
+    : pressure_(0.0) {
+  setPressure(pressure);
+  triangles_ = boundaryTriangles(model, region);
 }
 
 void PressureForm::setPressure(double pressure) {

@@ -74,6 +74,12 @@ struct SphereRegion {
   double radius = std::numeric_limits<double>::infinity();
 };
 
+/// The boundary faces of the finest level whose rest centroid lies in `region`, split into
+/// triangles of lattice node ids with outward orientation: each quadrilateral into (v0,v1,v2),
+/// (v0,v2,v3), a larger polygon fanned from v0.
+std::vector<std::array<uint32_t, 3>> boundaryTriangles(const FemModel& model,
+                                                       const SphereRegion& region = {});
+
 /// Pressure P (Pa) on the selected boundary faces of the finest level: energy -P V_region(x),
 /// V_region = sum over selected faces of (1/3) integral x . n dA on the faceted surface (each
 /// quadrilateral split into the triangles (v0,v1,v2), (v0,v2,v3), a larger polygon fanned from
