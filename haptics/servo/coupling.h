@@ -13,7 +13,7 @@
 // (x - p) . n < 0, and is zero once the hand withdraws, even before the simulation notices.
 //
 // Damping: b (v_point - v_tool) on the hand, in device units, while the coupling acts (the
-// passivity margin of a sampled spring, b > k T / 2; docs/haptics.md "Passivity").
+// passivity margin of a sampled spring, b > k T / 2; docs/design/haptics.md "Passivity").
 
 #include <Eigen/Core>
 

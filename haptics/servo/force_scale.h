@@ -4,7 +4,7 @@
 // newton) and the coupling stiffness are chosen together from the scene's stiffness and size so
 //  - a rigid grab feels like a spring of half the device's stable stiffness (the coupling alone,
 //    k_c W / S = k_stable / 2 with W the workspace scale, scene m per device m), so the loop is
-//    stable whatever the solid does (docs/haptics.md "Coupling"); and
+//    stable whatever the solid does (docs/design/haptics.md "Force scale"); and
 //  - a full pull (the stylus moved one workspace radius r from the grab) is felt at 80% of the
 //    device's maximum force, with the solid modelled as a spring k_solid = E R (E the scene's
 //    Young's modulus, R its radius) in series with the coupling:

@@ -86,7 +86,8 @@ void ServoThread::run() {
     maxForce_ = std::max(maxForce_, result.commanded.norm());
     if (records_.size() < recordCapacity_)
       records_.push_back({t, in.dt, in.probeAge, in.device.position, result.commanded,
-                          result.desired, result.onSolid, result.acting, result.clamped});
+                          result.desired, result.onSolid, result.acting, result.clamped,
+                          in.device.connected});
     state.tick = ticks_;
     state.time = t;
     state.device = in.device;

@@ -39,7 +39,7 @@ struct ServoRecord {
   Eigen::Vector3d commanded = Eigen::Vector3d::Zero();
   Eigen::Vector3d desired = Eigen::Vector3d::Zero();
   Eigen::Vector3d onSolid = Eigen::Vector3d::Zero();
-  bool acting = false, clamped = false;
+  bool acting = false, clamped = false, connected = false;
 };
 
 struct ServoStatistics {
