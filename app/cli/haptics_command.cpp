@@ -11,8 +11,6 @@
 #include <thread>
 #include <vector>
 
-#include <nlohmann/json.hpp>
-
 #include "cli/cli_args.h"
 #include "cli/cli_common.h"
 #include "cli/commands.h"
@@ -64,15 +62,6 @@ double numberIn(const CliArgs& args, const char* option, double lo, double hi) {
   return value;
 }
 
-// The device script's optional "tool" (the scripted transport's JSON holds it beside the keys).
-std::string scriptTool(const std::string& path) {
-  std::ifstream in(path);
-  const nlohmann::json json = nlohmann::json::parse(in, nullptr, false);
-  if (json.is_object() && json.contains("tool") && json["tool"].is_string())
-    return json["tool"].get<std::string>();
-  return "pull";
-}
-
 void writeForces(const std::string& path, const std::vector<haptics::ServoRecord>& records) {
   std::string text =
       "time_s,device_x_m,device_y_m,device_z_m,force_x_n,force_y_n,force_z_n,"
@@ -108,7 +97,8 @@ int hapticsCommand(const CliArgs& args, std::string& file) {
   const std::string deviceScriptPath = args.requiredValue("device-script");
   const haptics::DeviceScript deviceScript = haptics::loadDeviceScript(deviceScriptPath);
   bool paint = false;
-  const HapticTool tool = toolNamed(args.value("tool").value_or(scriptTool(deviceScriptPath)), paint);
+  const HapticTool tool = toolNamed(
+      args.value("tool").value_or(deviceScript.tool.empty() ? "pull" : deviceScript.tool), paint);
   const double seconds = args.has("seconds") ? numberIn(args, "seconds", 0.01, 600)
                                              : deviceScript.duration() + 0.5;
   const double factor = args.has("force-factor") ? numberIn(args, "force-factor", 1e-6, 1e6) : 1.0;
@@ -136,7 +126,7 @@ int hapticsCommand(const CliArgs& args, std::string& file) {
   settings.paintWithProbe = paint;
   settings.forceFactor = factor;
   settings.recordTicks = static_cast<size_t>(seconds * 1000.0 * 1.5) + 1000;
-  const haptics::HapticScene hapticScene = haptics::hapticSceneOf(*phase1->geometry, scene.settings);
+  const haptics::HapticScene hapticScene = haptics::hapticSceneOf(phase1->geometry, scene.settings);
   if (paint) {  // ten times stiffer, a tenth of the scene's radius, no mirror
     settings.paint.brush.radius = 0.1 * hapticScene.radius;
     settings.paint.brush.target = scene.settings.material;

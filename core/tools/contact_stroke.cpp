@@ -9,7 +9,12 @@ namespace sculpt {
 
 void ContactStroke::begin(ToolContext& context, const ToolInput& input) {
   if (!input.position.allFinite()) throw std::invalid_argument("probe: the position is not finite.");
-  boundary_ = std::make_unique<DeformedBoundary>(context.model());
+  if (settings_.surfaceVertices && settings_.surfaceTriangles)
+    boundary_ = std::make_unique<DeformedBoundary>(context.model(), context.locator(),
+                                                   *settings_.surfaceVertices,
+                                                   *settings_.surfaceTriangles);
+  else
+    boundary_ = std::make_unique<DeformedBoundary>(context.model());
   pull_ = std::make_unique<PullTool>(context.simulator());
   update(context, input);
 }

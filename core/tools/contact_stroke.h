@@ -1,5 +1,5 @@
 #pragma once
-// Contact with the deformed surface, as a stylus feels it: while the input is inside the solid,
+// Contact with the deformed surface, as a stylus feels it: while the input is inside the surface,
 // a zero-length spring pushes the surface point nearest the input towards the input (a
 // frictionless penalty contact: the point is found again at every update, so the contact slides
 // along the surface as the stylus strokes it). Outside the solid nothing acts. The spring's
@@ -30,6 +30,10 @@ class ContactStroke : public Tool {
     std::function<double(double youngs)> stiffnessForYoungs;
     /// Paints with this brush where the stylus touches while button 0 is held; none: no paint.
     std::optional<PaintStroke::Settings> paint;
+    /// The surface to touch, embedded in the solid (rest vertices, three indices per triangle;
+    /// the scene's detail surface); none: the solid's own boundary.
+    std::shared_ptr<const Points> surfaceVertices;
+    std::shared_ptr<const std::vector<uint32_t>> surfaceTriangles;
   };
   explicit ContactStroke(Settings settings) : settings_(std::move(settings)) {}
   const char* name() const override { return "probe"; }

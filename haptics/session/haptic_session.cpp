@@ -12,14 +12,28 @@ namespace {
 constexpr uint32_t kToolButton = 1u << 0, kClutchButton = 1u << 1;
 constexpr auto kSessionPeriod = std::chrono::microseconds(2000);
 
+// The servo's safety for a stylus on a scene: a probe counts as stale after 100 ms (zero at
+// 150 ms), the upper end of the usual 50-100 ms, because a scene the machine cannot step in real
+// time publishes probes 50-130 ms apart while it is alive and well; a fade recovers in 50 ms.
 SafetySettings deviceSafety(const std::optional<SafetySettings>& safety, const DeviceInfo& device) {
-  return safety ? *safety : SafetySettings::forMaxForce(device.maxForce);
+  if (safety) return *safety;
+  SafetySettings s = SafetySettings::forMaxForce(device.maxForce);
+  s.staleAfter = 0.1;
+  s.fadeTime = 0.05;
+  s.recoverTime = 0.05;
+  return s;
 }
 
 }  // namespace
 
-HapticScene hapticSceneOf(const SceneGeometry& geometry, const SceneSettings& settings) {
+HapticScene hapticSceneOf(const std::shared_ptr<const SceneGeometry>& shared,
+                          const SceneSettings& settings) {
   HapticScene scene;
+  const SceneGeometry& geometry = *shared;
+  if (geometry.restPositions.rows() > 0 && !geometry.triangles.empty()) {
+    scene.surfaceVertices = std::shared_ptr<const Points>(shared, &geometry.restPositions);
+    scene.surfaceTriangles = std::shared_ptr<const std::vector<uint32_t>>(shared, &geometry.triangles);
+  }
   const Points& points = geometry.restPositions.rows() > 0 ? geometry.restPositions : geometry.restControl;
   if (points.rows() > 0) {
     const Eigen::Vector3d lo = points.colwise().minCoeff().transpose();
@@ -115,6 +129,8 @@ std::unique_ptr<Tool> HapticSession::makeTool(HapticTool tool, bool paint) const
           return scale.sceneStiffness(scale.contactDeviceStiffness(youngs));
         };
       if (paint) contact.paint = settings_.paint;
+      contact.surfaceVertices = scene_.surfaceVertices;
+      contact.surfaceTriangles = scene_.surfaceTriangles;
       return std::make_unique<ContactStroke>(contact);
     }
     case HapticTool::Inflate:

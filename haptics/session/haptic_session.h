@@ -38,8 +38,13 @@ struct HapticScene {
   Eigen::Vector3d centre = Eigen::Vector3d::Zero();
   double radius = 1.0;  ///< m, of the bounding sphere of the rest shape
   double youngs = 0.0;  ///< Pa, the scene's material
+  /// The surface the probe touches (the scene's detail surface); none: the solid's boundary.
+  std::shared_ptr<const Points> surfaceVertices;
+  std::shared_ptr<const std::vector<uint32_t>> surfaceTriangles;
 };
-HapticScene hapticSceneOf(const SceneGeometry& geometry, const SceneSettings& settings);
+/// The scene's box, material and detail surface (which the result shares).
+HapticScene hapticSceneOf(const std::shared_ptr<const SceneGeometry>& geometry,
+                          const SceneSettings& settings);
 
 struct HapticSessionSettings {
   HapticTool tool = HapticTool::Pull;
