@@ -14,8 +14,10 @@ inline double secondsSince(Clock::time_point start) {
 }
 
 /// The view's background colour (transparent for screenshots that ask for it).
-inline void clearBackground(bool transparent) {
-  glClearColor(0.16f, 0.17f, 0.19f, transparent ? 0.0f : 1.0f);
+/// `tint` in [0, 1] saturates the grey towards red: the force the stylus feels (McDonnell-Qin
+/// Fig. 8).
+inline void clearBackground(bool transparent, float tint = 0.0f) {
+  glClearColor(0.16f + 0.5f * tint, 0.17f - 0.08f * tint, 0.19f - 0.1f * tint, transparent ? 0.0f : 1.0f);
   glClear(GL_COLOR_BUFFER_BIT | GL_DEPTH_BUFFER_BIT);
 }
 

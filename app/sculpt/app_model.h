@@ -81,6 +81,7 @@ struct AppModel {
   std::array<char, 1024> scenePathInput{};
   std::vector<std::string> recentScenes;  ///< most recent first (File > Recent)
   bool showHelp = false, showPanels = true;
+  bool showStylus = false;  ///< the stylus (haptic device) panel
   float uiScale = 1.0f;
   std::vector<Toast> toasts;
   Requests requests;

@@ -13,6 +13,7 @@ const char* const kUsage =
     "  --dt S                 simulated seconds per step (default: the scene's, 1/60)\n"
     "  --script FILE          replay a session script (docs/file-formats.md) on the scene\n"
     "  --level K              simulation level (1..3)\n"
+    "  --cage N               cage cells across a surface (1..64, default 6)\n"
     "  --method M             phong | linear | vertex | attribute\n"
     "  --field F              none | youngs | density | displacement | strain | damping\n"
     "  --clip x|y|z           clipping plane through the middle of the solid\n"
@@ -20,6 +21,7 @@ const char* const kUsage =
     "  --preset blender|stylus  mouse navigation preset (default blender)\n"
     "  --ui-scale S           1..3 (default: the monitor's content scale)\n"
     "  --show-help            open the keys-and-mouse overlay (F1) at start\n"
+    "  --simulated-device     the mouse drives a mock haptic stylus (Touch), with its panel\n"
     "  --headless             render offscreen (needs an X display: use xvfb-run without one)\n"
     "  --screenshot OUT.png   headless: write the last frame there\n"
     "  --out FINAL.vtk        headless: write the final control mesh there (as sculpt-cli\n"
@@ -77,6 +79,8 @@ Options parseOptions(int argc, char** argv, bool* helpShown) {
       options.scene = value();
     } else if (arg == "--script") {
       options.script = value();
+    } else if (arg == "--cage") {
+      options.cage = intIn(arg, value(), 1, 64);
     } else if (arg == "--level") {
       options.level = intIn(arg, value(), 1, 3);
     } else if (arg == "--method") {
@@ -134,6 +138,8 @@ Options parseOptions(int argc, char** argv, bool* helpShown) {
       if (options.supersample == 3) throw std::invalid_argument("--supersample must be 1, 2 or 4");
     } else if (arg == "--transparent") {
       options.transparent = true;
+    } else if (arg == "--simulated-device") {
+      options.simulatedDevice = true;
     } else if (arg == "--no-ui") {
       options.noUi = true;
     } else if (arg == "--bench") {

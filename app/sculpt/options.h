@@ -16,9 +16,11 @@ struct Options {
   std::string scene;  ///< control mesh (.json) or surface (.obj/.gltf/.glb); empty: the bunny
   std::string script;  ///< a session script to replay once the simulation runs
   std::optional<int> level;  ///< simulation level K
+  std::optional<int> cage;   ///< cage cells across a surface scene
   std::optional<double> timeStep;  ///< seconds per step (over the scene's or project's)
   DisplaySettings display;
   bool stylusPreset = false;
+  bool simulatedDevice = false;  ///< start with the mouse driving the mock haptic stylus
   bool showHelp = false;  ///< open the keys-and-mouse overlay at start
   float uiScale = 0.0f;  ///< 0: from the monitor's content scale
   bool headless = false;

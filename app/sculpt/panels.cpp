@@ -64,6 +64,7 @@ void menuBar(AppModel& m) {
     if (ImGui::MenuItem("Perspective / orthographic", "Numpad 5")) r.toggleOrthographic = true;
     ImGui::Separator();
     ImGui::MenuItem("Panels", "Tab", &m.showPanels);
+    ImGui::MenuItem("Stylus device", nullptr, &m.showStylus);
     if (ImGui::BeginMenu("Navigation preset")) {
       if (ImGui::MenuItem("Blender (middle mouse)", nullptr, m.preset == NavigationPreset::Blender))
         m.preset = NavigationPreset::Blender;

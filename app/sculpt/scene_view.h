@@ -30,6 +30,7 @@ class SceneView {
   void setGeometry(std::shared_ptr<const SceneGeometry> geometry);
   bool hasGeometry() const { return geometry_ != nullptr; }
   const SceneGeometry* geometry() const { return geometry_.get(); }
+  const std::shared_ptr<const SceneGeometry>& sharedGeometry() const { return geometry_; }
 
   /// Takes a new simulation state and uploads what `display` needs of it.
   void setFrame(const SceneFrame& frame, const DisplaySettings& display);

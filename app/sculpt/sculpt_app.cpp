@@ -71,6 +71,7 @@ SculptApp::SculptApp(GLFWwindow* window, const Options& options, Clock::time_poi
   model_.sceneFile = options.scene;
   model_.showPanels = !options.noUi;
   model_.showHelp = options.showHelp;
+  stylus_.setSimulated(options.simulatedDevice);
   model_.screenshot.supersample = options.supersample;
   model_.screenshot.transparent = options.transparent;
 
@@ -128,6 +129,7 @@ SculptApp::~SculptApp() {
 
 void SculptApp::applyCommandLineSettings() {
   if (options_.level) model_.settings.level = *options_.level;
+  if (options_.cage) model_.settings.cageCellsAcross = *options_.cage;
   if (options_.timeStep) model_.settings.timeStep = *options_.timeStep;
 }
 
@@ -225,6 +227,9 @@ void SculptApp::syncScene() {
       model_.toast(latest_.lastStep.message, !latest_.lastStep.ok);
     model_.status.lastStepMessage = latest_.lastStep.message;
   }
+  stylus_.attach(controller_->loop(), view_.sharedGeometry(), controller_->settings(),
+                 latest_.physicsReady);
+  stylus_.setView(camera_);
   const double window = secondsSince(rateWindowStart_);
   if (window > 1.0) {
     model_.status.stepsPerSecond = static_cast<double>(latest_.version - rateWindowVersion_) / window;
@@ -493,6 +498,7 @@ void SculptApp::frame(int fbWidth, int fbHeight, bool interactive) {
     view = drawPanels(model_);
     drawColourBar(model_.display.field, model_.fieldRange, view.min, view.max);
     drawBuildProgress(model_, view);
+    if (model_.showStylus || stylus_.simulated()) stylus_.drawPanel(view.min, view.max);
     drawToasts(model_, view);
     if (model_.showHelp) drawHelpOverlay(keys_, model_.preset, &model_.showHelp);
   }
@@ -504,7 +510,7 @@ void SculptApp::frame(int fbWidth, int fbHeight, bool interactive) {
   const float pixelScale = ImGui::GetIO().DisplayFramebufferScale.x;
   glViewport(0, 0, fbWidth, fbHeight);
   glDisable(GL_SCISSOR_TEST);
-  clearBackground(false);
+  clearBackground(false, stylus_.tintBackground() ? stylus_.forceFraction() : 0.0f);
   drawScene(view, fbWidth, fbHeight, pixelScale);
   if (interactive && view_.hasGeometry()) {
     // Depth under the cursor, for the pivot (double click) and the Stylus preset's

@@ -25,6 +25,7 @@
 #include "sculpt/panels.h"
 #include "scene/scene_controller.h"
 #include "sculpt/scene_view.h"
+#include "sculpt/stylus_device.h"
 #include "scene/material_picker.h"
 #include "tools/session_script.h"
 #include "tools/strokes.h"
@@ -65,6 +66,7 @@ class SculptApp {
   const render::Camera& camera() const { return camera_; }
   ViewRect viewRect() const { return lastView_; }
   const SceneView& sceneView() const { return view_; }
+  StylusDevice& stylus() { return stylus_; }
 
  private:
   /// Builds the UI and draws the scene into the bound framebuffer (fbWidth x fbHeight pixels).
@@ -84,6 +86,7 @@ class SculptApp {
   void endToolStroke();
   void takeEyedropperResult();
   void pullStroke(const PointerResult& stroke, float x, float y, int width, int height);
+  void stylusStroke(const PointerResult& stroke, float x, float y, int width, int height);
   void brushStroke(const PointerResult& stroke, float x, float y, int width, int height);
   void curveStroke(const PointerResult& stroke, float x, float y, int width, int height);
   void topologyClick(const PointerResult& stroke, float x, float y, int width, int height);
@@ -142,6 +145,8 @@ class SculptApp {
   bool imguiReady_ = false;
   std::function<void(ImGuiIO&, int)> inputHook_;
   int frameIndex_ = 0;
+  StylusDevice stylus_;  ///< the haptic stylus (simulated-device mode: driven by the mouse)
+  bool stylusHeld_ = false;
 
   // The user's work and the tools
   Document document_;

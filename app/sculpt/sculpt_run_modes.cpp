@@ -60,7 +60,7 @@ void SculptApp::writeScreenshot(const std::string& path, const ScreenshotSetting
   render::OffscreenTarget target(width * s, height * s);
   target.bind();
   glViewport(0, 0, width * s, height * s);
-  clearBackground(settings.transparent);
+  clearBackground(settings.transparent, stylus_.tintBackground() ? stylus_.forceFraction() : 0.0f);
   drawScene(view, width * s, height * s, pixelScale * static_cast<float>(s));
   if (panels) {
     ImDrawData* drawData = ImGui::GetDrawData();
@@ -95,6 +95,9 @@ int SculptApp::runWindow() {
       if (quitClockStart && secondsSince(*quitClockStart) > options_.quitAfter)
         glfwSetWindowShouldClose(window_, 1);
     }
+    // The stylus moves and its force changes between simulation frames: keep drawing.
+    if (stylus_.active()) busyFrames = std::max(busyFrames, 1);
+    stylus_.setFocused(glfwGetWindowAttrib(window_, GLFW_FOCUSED) != 0);
     if (busyFrames > 0) {
       glfwPollEvents();
     } else {

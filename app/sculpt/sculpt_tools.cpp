@@ -96,6 +96,10 @@ void SculptApp::toolStroke(const PointerResult& stroke, float x, float y, int wi
     strokeTool_ = model_.tools.tool;
     strokeInverted_ = ImGui::GetIO().KeyCtrl;
   }
+  if (stylus_.active()) {  // simulated device: the mouse moves the stylus' hand
+    stylusStroke(stroke, x, y, width, height);
+    return;
+  }
   if (!stroke.strokeBegan && !stroke.strokeActive && !stroke.strokeEnded) return;
   switch (strokeTool_) {
     case ToolKind::Pull: pullStroke(stroke, x, y, width, height); break;
@@ -142,6 +146,26 @@ void SculptApp::pullStroke(const PointerResult& stroke, float x, float y, int wi
     controller_->loop().updateStroke(stroke_, toolInput(*near + grabDistance_ * direction, std::nullopt));
   }
   if (stroke.strokeEnded) endToolStroke();
+}
+
+void SculptApp::stylusStroke(const PointerResult& stroke, float x, float y, int width, int height) {
+  // A press on the surface puts the hand there (a probe a little inside, so it touches); a drag
+  // moves it in the view plane at that depth, as a pull drags; release lifts the button.
+  const std::optional<glm::vec3> near = camera_.unproject(x, y, 0.0f, width, height);
+  const std::optional<glm::vec3> far = camera_.unproject(x, y, 0.999f, width, height);
+  if (!near || !far) return;
+  const glm::vec3 direction = glm::normalize(*far - *near);
+  if (stroke.strokeBegan) {
+    const std::optional<SurfaceHit> hit = surfaceHit(x, y, cursorDepth_, width, height);
+    if (!hit) return;
+    const float inside = stylus_.tool() == haptics::HapticTool::Pull ? 0.0f : 0.03f * view_.radius();
+    grabDistance_ = glm::dot(hit->world - *near, direction) + inside;
+    stylusHeld_ = true;
+  }
+  if (!stylusHeld_) return;
+  const glm::vec3 at = *near + grabDistance_ * direction;
+  stylus_.moveHand(Eigen::Vector3d(at.x, at.y, at.z), !stroke.strokeEnded);
+  if (stroke.strokeEnded) stylusHeld_ = false;
 }
 
 void SculptApp::brushStroke(const PointerResult& stroke, float x, float y, int width, int height) {
@@ -426,6 +450,11 @@ void SculptApp::drawToolOverlay(const ViewRect& view) {
   if (!view_.hasGeometry()) return;
   ImDrawList* draw = ImGui::GetBackgroundDrawList();
   draw->PushClipRect(view.min, view.max, true);
+  if (stylus_.active()) {
+    stylus_.drawCursor(draw, camera_, view.min, view.max);
+    draw->PopClipRect();
+    return;
+  }
   const int width = std::max(1, static_cast<int>(view.max.x - view.min.x));
   const int height = std::max(1, static_cast<int>(view.max.y - view.min.y));
   const auto screen = [&](const glm::vec3& world) {

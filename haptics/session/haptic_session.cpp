@@ -57,6 +57,7 @@ HapticSession::HapticSession(SimulationLoop& loop, HapticDevice& device, const H
   forceFactor_ = settings_.forceFactor;
   scale_ = chooseForceScale(device.info(), mapping_.scale, scene.youngs, scene.radius, forceFactor_);
   status_.scale = scale_;
+  status_.mapping = mapping_;
   status_.forceLimit = device.info().maxForce;
   status_.tool = settings_.tool;
 }
@@ -256,6 +257,7 @@ void HapticSession::publishStatus(const HandState& hand, bool clutching) {
   status_.force = hand.result.commanded;
   status_.probeAge = hand.probeAge;
   status_.scale = scale_;
+  status_.mapping = mapping_;
   status_.servoTicks = hand.tick;
 }
 

@@ -73,6 +73,7 @@ struct HapticStatus {
   double forceLimit = 0.0;                          ///< N
   double probeAge = 0.0;                            ///< s
   ForceScale scale;
+  WorkspaceMapping mapping;  ///< device -> scene, as the session uses it now (clutch included)
   uint64_t servoTicks = 0;
 };
 

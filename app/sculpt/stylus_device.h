@@ -1,0 +1,71 @@
+#pragma once
+// The window's stylus: a haptic session (haptics/session/haptic_session.h) on the running scene,
+// with its device panel, its 3D cursor and the background's tint (McDonnell-Qin Fig. 8: the
+// background's saturation shows the force felt). Without hardware, "simulated device" mode
+// drives the mock PHANTOM-class arm from the mouse: the mouse moves the hand's set point and the
+// mock's hand spring lags behind it by the force the servo renders, so the whole force path can
+// be seen and tried. HID devices found by the device manager (SpaceMouse family, profiles) are
+// listed in the panel.
+
+#include <memory>
+#include <optional>
+#include <string>
+
+#include <Eigen/Core>
+#include <imgui.h>
+
+#include "haptics/hid/device_manager.h"
+#include "haptics/mock/mock_phantom.h"
+#include "haptics/session/haptic_session.h"
+#include "render/camera.h"
+#include "scene/scene_builder.h"
+#include "scene/simulation_loop.h"
+
+namespace sculpt::app {
+
+class StylusDevice {
+ public:
+  StylusDevice();
+  ~StylusDevice();
+
+  /// Simulated-device mode on or off (applied at the next attach()).
+  void setSimulated(bool on) { wanted_ = on; }
+  bool simulated() const { return wanted_; }
+  /// Follows the scene: (re)starts the session on a newly running scene, stops it when the mode
+  /// is off. Call once per frame.
+  void attach(SimulationLoop& loop, const std::shared_ptr<const SceneGeometry>& geometry,
+              const SceneSettings& settings, bool physicsReady);
+  void stop();
+  bool active() const { return session_ != nullptr; }
+
+  /// The mouse, in simulated mode: where the hand means the stylus to be (scene m) and whether
+  /// its button is held.
+  void moveHand(const Eigen::Vector3d& scenePoint, bool button);
+  /// The camera turns the device's axes (right on the device is right on the screen).
+  void setView(const render::Camera& camera);
+  void setFocused(bool focused);
+
+  /// Force felt as a fraction of the device's limit, for the background's tint (0 when off).
+  float forceFraction() const;
+  bool tintBackground() const { return tint_; }
+  /// The device panel (an ImGui window), first placed at the upper left of the view.
+  void drawPanel(ImVec2 viewMin, ImVec2 viewMax);
+  /// The stylus' cursor and, when probing or painting, its brush radius, in the view.
+  void drawCursor(ImDrawList* draw, const render::Camera& camera, ImVec2 viewMin, ImVec2 viewMax) const;
+  haptics::HapticTool tool() const { return tool_; }
+  haptics::HapticStatus status() const;
+
+ private:
+  bool wanted_ = false, tint_ = true, paint_ = false;
+  haptics::HapticTool tool_ = haptics::HapticTool::Pull;
+  float forceFactor_ = 1.0f;
+  uint64_t sceneId_ = 0;
+  double sceneRadius_ = 1.0;
+  std::unique_ptr<haptics::MockPhantom> mock_;
+  std::unique_ptr<haptics::HapticSession> session_;
+  std::unique_ptr<haptics::DeviceManager> devices_;
+  std::string devicesError_;
+  Eigen::Vector3d handScene_ = Eigen::Vector3d::Zero();
+};
+
+}  // namespace sculpt::app
