@@ -1,6 +1,6 @@
 // The stylus end to end: the mock PHANTOM-class device, the 1 kHz servo thread, the haptic
 // session and the real FEM running on the scene's simulation thread (the scene controller, as
-// the window runs it). Run under ThreadSanitizer too (scripts/test.sh builds the suite with it).
+// the window runs it). Run under ThreadSanitizer too (scripts/test.sh --tsan).
 
 #include <gtest/gtest.h>
 
