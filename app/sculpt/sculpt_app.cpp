@@ -72,6 +72,7 @@ SculptApp::SculptApp(GLFWwindow* window, const Options& options, Clock::time_poi
   model_.showPanels = !options.noUi;
   model_.showHelp = options.showHelp;
   stylus_.setSimulated(options.simulatedDevice);
+  if (!options.headless) stylus_.enableHid();
   model_.screenshot.supersample = options.supersample;
   model_.screenshot.transparent = options.transparent;
 

@@ -88,6 +88,7 @@ int SculptApp::runWindow() {
   // more after it (ImGui settles hover states); otherwise the loop sleeps until an event or a
   // short timeout, so that an idle window leaves the CPU to the builder and the simulation.
   int busyFrames = 3;
+  double lastDeviceTime = glfwGetTime();
   while (!glfwWindowShouldClose(window_)) {
     if (options_.quitAfter > 0.0) {
       if (!quitClockStart && (firstFrameReported_ || !model_.status.build.error.empty()))
@@ -97,6 +98,10 @@ int SculptApp::runWindow() {
     }
     // The stylus moves and its force changes between simulation frames: keep drawing.
     if (stylus_.active()) busyFrames = std::max(busyFrames, 1);
+    const double now = glfwGetTime();
+    if (stylus_.driveCamera(camera_, static_cast<float>(now - lastDeviceTime), lastFbHeight_))
+      busyFrames = std::max(busyFrames, 2);
+    lastDeviceTime = now;
     stylus_.setFocused(glfwGetWindowAttrib(window_, GLFW_FOCUSED) != 0);
     if (busyFrames > 0) {
       glfwPollEvents();

@@ -25,6 +25,41 @@ StylusDevice::StylusDevice() = default;
 
 StylusDevice::~StylusDevice() { stop(); }
 
+void StylusDevice::enableHid() {
+  if (devices_ || !devicesError_.empty()) return;
+  try {  // HID devices are listed in the panel; none is normal
+    devices_ = std::make_unique<haptics::DeviceManager>(
+        [] { return std::make_unique<haptics::HidapiTransport>(); });
+  } catch (const std::exception& e) {
+    devicesError_ = e.what();
+  }
+}
+
+bool StylusDevice::driveCamera(render::Camera& camera, float dt, int viewportHeight) {
+  if (!devices_ || !(dt > 0)) return false;
+  dt = std::min(dt, 0.1f);  // a stalled frame does not fling the camera
+  bool moved = false;
+  for (const haptics::ManagedDevice& device : devices_->devices()) {
+    if (!device.connected || device.id < 0) continue;
+    if (channels_.size() <= static_cast<size_t>(device.id)) channels_.resize(device.id + 1);
+    auto& channel = channels_[device.id];
+    if (!channel) channel = devices_->channel(device.id);
+    if (!channel) continue;
+    const haptics::HidInputState& s = channel->read();
+    if (!s.connected) continue;
+    // Rates at full deflection: half a turn per second, a viewport height per second, e^2 zoom.
+    const auto& t = s.translation;
+    const auto& r = s.rotation;
+    if (r[0] != 0 || r[1] != 0) camera.orbitBy(static_cast<float>(-r[1] * M_PI * dt), static_cast<float>(r[0] * M_PI * dt));
+    if (t[0] != 0 || t[1] != 0)
+      camera.pan(static_cast<float>(t[0] * viewportHeight * dt), static_cast<float>(-t[1] * viewportHeight * dt),
+                 viewportHeight);
+    if (t[2] != 0) camera.zoom(static_cast<float>(std::exp(-2.0 * t[2] * dt)));
+    moved |= r[0] != 0 || r[1] != 0 || t[0] != 0 || t[1] != 0 || t[2] != 0;
+  }
+  return moved;
+}
+
 void StylusDevice::stop() {
   if (session_) session_->stop();
   session_.reset();
@@ -37,14 +72,6 @@ void StylusDevice::attach(SimulationLoop& loop, const std::shared_ptr<const Scen
   if (!wanted_ || !geometry || !physicsReady) {
     if (!wanted_ && session_) stop();
     return;
-  }
-  if (!devices_ && devicesError_.empty()) {
-    try {  // HID devices are listed in the panel; none is normal
-      devices_ = std::make_unique<haptics::DeviceManager>(
-          [] { return std::make_unique<haptics::HidapiTransport>(); });
-    } catch (const std::exception& e) {
-      devicesError_ = e.what();
-    }
   }
   if (session_ && sceneId_ == geometry->sceneId) return;
   stop();

@@ -10,6 +10,7 @@
 #include <memory>
 #include <optional>
 #include <string>
+#include <vector>
 
 #include <Eigen/Core>
 #include <imgui.h>
@@ -28,6 +29,11 @@ class StylusDevice {
   StylusDevice();
   ~StylusDevice();
 
+  /// Looks for HID devices (a device-manager thread polling hidapi); off in headless runs.
+  void enableHid();
+  /// A SpaceMouse (or any HID 6-DOF device) orbits, pans and zooms the camera by rate control:
+  /// its displacement is a velocity. Returns true when the camera moved. UI thread.
+  bool driveCamera(render::Camera& camera, float dt, int viewportHeight);
   /// Simulated-device mode on or off (applied at the next attach()).
   void setSimulated(bool on) { wanted_ = on; }
   bool simulated() const { return wanted_; }
@@ -65,6 +71,7 @@ class StylusDevice {
   std::unique_ptr<haptics::HapticSession> session_;
   std::unique_ptr<haptics::DeviceManager> devices_;
   std::string devicesError_;
+  std::vector<std::shared_ptr<haptics::HidDeviceChannel>> channels_;  // by device id
   Eigen::Vector3d handScene_ = Eigen::Vector3d::Zero();
 };
 
