@@ -87,6 +87,10 @@ class SculptApp {
   void takeEyedropperResult();
   void pullStroke(const PointerResult& stroke, float x, float y, int width, int height);
   void stylusStroke(const PointerResult& stroke, float x, float y, int width, int height);
+  struct CursorRay {
+    glm::vec3 origin, direction;  ///< from the near plane, unit
+  };
+  std::optional<CursorRay> cursorRay(float x, float y, int width, int height) const;
   void brushStroke(const PointerResult& stroke, float x, float y, int width, int height);
   void curveStroke(const PointerResult& stroke, float x, float y, int width, int height);
   void topologyClick(const PointerResult& stroke, float x, float y, int width, int height);

@@ -125,25 +125,32 @@ void SculptApp::endToolStroke() {
   stroke_ = 0;
 }
 
+std::optional<SculptApp::CursorRay> SculptApp::cursorRay(float x, float y, int width,
+                                                         int height) const {
+  const std::optional<glm::vec3> near = camera_.unproject(x, y, 0.0f, width, height);
+  const std::optional<glm::vec3> far = camera_.unproject(x, y, 0.999f, width, height);
+  if (!near || !far) return std::nullopt;
+  return CursorRay{*near, glm::normalize(*far - *near)};
+}
+
 void SculptApp::pullStroke(const PointerResult& stroke, float x, float y, int width, int height) {
   // A stroke that starts on the surface grabs the material point under the cursor with a spring;
   // the target then follows the cursor in the view plane at the grabbed depth (with Ctrl it is
   // reflected through the grabbed point: push).
   // The wheel moves the target along the ray through the cursor (depth by wheel).
-  const std::optional<glm::vec3> near = camera_.unproject(x, y, 0.0f, width, height);
-  const std::optional<glm::vec3> far = camera_.unproject(x, y, 0.999f, width, height);
-  if (!near || !far) return;
-  const glm::vec3 direction = glm::normalize(*far - *near);
+  const std::optional<CursorRay> ray = cursorRay(x, y, width, height);
+  if (!ray) return;
+  const glm::vec3 &origin = ray->origin, &direction = ray->direction;
   if (stroke.strokeBegan) {
     if (const std::optional<SurfaceHit> hit = surfaceHit(x, y, cursorDepth_, width, height)) {
       PullStroke::Settings settings;
       settings.keep = model_.tools.keepOnRelease;
       stroke_ = controller_->loop().beginStroke(std::make_unique<PullStroke>(settings),
                                                 toolInput(hit->world, hit->rest));
-      grabDistance_ = glm::dot(hit->world - *near, direction);
+      grabDistance_ = glm::dot(hit->world - origin, direction);
     }
   } else if (stroke.strokeActive && stroke_ != 0) {
-    controller_->loop().updateStroke(stroke_, toolInput(*near + grabDistance_ * direction, std::nullopt));
+    controller_->loop().updateStroke(stroke_, toolInput(origin + grabDistance_ * direction, std::nullopt));
   }
   if (stroke.strokeEnded) endToolStroke();
 }
@@ -151,19 +158,18 @@ void SculptApp::pullStroke(const PointerResult& stroke, float x, float y, int wi
 void SculptApp::stylusStroke(const PointerResult& stroke, float x, float y, int width, int height) {
   // A press on the surface puts the hand there (a probe a little inside, so it touches); a drag
   // moves it in the view plane at that depth, as a pull drags; release lifts the button.
-  const std::optional<glm::vec3> near = camera_.unproject(x, y, 0.0f, width, height);
-  const std::optional<glm::vec3> far = camera_.unproject(x, y, 0.999f, width, height);
-  if (!near || !far) return;
-  const glm::vec3 direction = glm::normalize(*far - *near);
+  const std::optional<CursorRay> ray = cursorRay(x, y, width, height);
+  if (!ray) return;
+  const glm::vec3 &origin = ray->origin, &direction = ray->direction;
   if (stroke.strokeBegan) {
     const std::optional<SurfaceHit> hit = surfaceHit(x, y, cursorDepth_, width, height);
     if (!hit) return;
     const float inside = stylus_.tool() == haptics::HapticTool::Pull ? 0.0f : 0.03f * view_.radius();
-    grabDistance_ = glm::dot(hit->world - *near, direction) + inside;
+    grabDistance_ = glm::dot(hit->world - origin, direction) + inside;
     stylusHeld_ = true;
   }
   if (!stylusHeld_) return;
-  const glm::vec3 at = *near + grabDistance_ * direction;
+  const glm::vec3 at = origin + grabDistance_ * direction;
   stylus_.moveHand(Eigen::Vector3d(at.x, at.y, at.z), !stroke.strokeEnded);
   if (stroke.strokeEnded) stylusHeld_ = false;
 }

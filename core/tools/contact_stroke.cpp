@@ -67,12 +67,7 @@ void ContactStroke::clear() {
 
 void ContactStroke::springs(const Simulator&, std::vector<ToolSpring>& out) const {
   if (!holdsLoads()) return;
-  ToolSpring spring;
-  spring.point = pull_->pointPosition();
-  spring.velocity = pull_->pointVelocity();
-  spring.target = pull_->target();
-  spring.stiffness = pull_->stiffness();
-  spring.force = pull_->springForce();
+  ToolSpring spring = pull_->heldSpring();
   spring.normal = normal_;
   out.push_back(spring);
 }

@@ -49,4 +49,14 @@ double PullTool::springForce() const {
   return s->stiffness() * (s->position(springs_.simulator().positions()) - s->target()).norm();
 }
 
+ToolSpring PullTool::heldSpring() const {
+  ToolSpring spring;
+  spring.point = pointPosition();
+  spring.velocity = pointVelocity();
+  spring.target = target();
+  spring.stiffness = stiffness();
+  spring.force = springForce();
+  return spring;
+}
+
 }  // namespace sculpt

@@ -14,6 +14,7 @@
 
 #include "sim/material_point.h"
 #include "sim/simulator.h"
+#include "tools/tool.h"
 #include "tools/tool_springs.h"
 
 namespace sculpt {
@@ -49,6 +50,8 @@ class PullTool {
   const Eigen::Vector3d& anchor() const { return anchor_; }
   /// k |x - target| (N) for the force line; 0 when not grabbing.
   double springForce() const;
+  /// The held spring as the view and the probe show it (call only while active()).
+  ToolSpring heldSpring() const;
 
  private:
   PenaltySpringForm* spring() const { return active() ? springs_.held().front() : nullptr; }

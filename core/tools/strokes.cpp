@@ -35,14 +35,7 @@ bool PullStroke::holdsLoads() const { return pull_ && (pull_->active() || pull_-
 
 void PullStroke::springs(const Simulator& simulator, std::vector<ToolSpring>& out) const {
   (void)simulator;
-  if (!pull_ || !pull_->active()) return;
-  ToolSpring spring;
-  spring.point = pull_->pointPosition();
-  spring.velocity = pull_->pointVelocity();
-  spring.target = pull_->target();
-  spring.stiffness = pull_->stiffness();
-  spring.force = pull_->springForce();
-  out.push_back(spring);
+  if (pull_ && pull_->active()) out.push_back(pull_->heldSpring());
 }
 
 // ---------------------------------------------------------------------------------------------

@@ -2,6 +2,8 @@
 
 #include <gtest/gtest.h>
 
+#include "haptics/mock/mock_phantom.h"
+
 #include <cmath>
 
 #include "haptics/servo/coupling.h"
@@ -10,16 +12,7 @@
 namespace sculpt::haptics {
 namespace {
 
-DeviceInfo touch() {
-  DeviceInfo info;
-  info.model = "Touch";
-  info.maxForce = 3.3;
-  info.stableStiffness = 400;
-  info.damping = 4.0;
-  info.workspaceRadius = 0.075;
-  info.capabilities = kSensesPosition | kSensesButtons | kActuatesForce;
-  return info;
-}
+DeviceInfo touch() { return MockPhantom::modelInfo(PhantomModel::kTouch); }
 
 TEST(Coupling, TheHandFeelsTheOppositeOfTheSolidsForceScaledAndRotated) {
   WorkspaceMapping mapping = WorkspaceMapping::fit(0.075, Eigen::Vector3d(1, 2, 3), 7.5);

@@ -2,20 +2,14 @@
 
 #include <gtest/gtest.h>
 
+#include "haptics/mock/mock_phantom.h"
+
 #include "haptics/servo/servo_controller.h"
 
 namespace sculpt::haptics {
 namespace {
 
-DeviceInfo touch() {
-  DeviceInfo info;
-  info.maxForce = 3.3;
-  info.stableStiffness = 400;
-  info.damping = 4.0;
-  info.workspaceRadius = 0.075;
-  info.capabilities = kSensesPosition | kSensesButtons | kActuatesForce;
-  return info;
-}
+DeviceInfo touch() { return MockPhantom::modelInfo(PhantomModel::kTouch); }
 
 struct Bench {
   ServoController servo{touch(), SafetySettings::forMaxForce(3.3)};
