@@ -33,7 +33,7 @@ class DevicesCliTest : public test::CliFixture {
   DevicesCliTest() : CliFixture("sculpt_devices_cli_test_") {}
   void SetUp() override {
     CliFixture::SetUp();
-    if (!std::filesystem::exists(test::kCli)) GTEST_SKIP() << "sculpt-cli is not built";
+    ASSERT_TRUE(std::filesystem::exists(test::kCli)) << test::kCli << " is not built";
   }
 };
 
