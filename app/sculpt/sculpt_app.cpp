@@ -500,6 +500,8 @@ void SculptApp::frame(int fbWidth, int fbHeight, bool interactive) {
     drawColourBar(model_.display.field, model_.fieldRange, view.min, view.max);
     drawBuildProgress(model_, view);
     if (model_.showStylus || stylus_.simulated()) stylus_.drawPanel(view.min, view.max);
+    if (stylus_.active() && !ImGui::GetIO().WantTextInput && ImGui::IsKeyPressed(GLFW_KEY_ESCAPE, false))
+      stylus_.panic();  // the panic key: the stylus' force goes to zero until re-armed
     drawToasts(model_, view);
     if (model_.showHelp) drawHelpOverlay(keys_, model_.preset, &model_.showHelp);
   }

@@ -118,6 +118,10 @@ void StylusDevice::setFocused(bool focused) {
   if (session_) session_->setFocused(focused);
 }
 
+void StylusDevice::panic() {
+  if (session_) session_->panic();
+}
+
 haptics::HapticStatus StylusDevice::status() const {
   return session_ ? session_->status() : haptics::HapticStatus{};
 }
@@ -171,7 +175,7 @@ void StylusDevice::drawPanel(ImVec2 viewMin, ImVec2 viewMax) {
       ImGui::TextColored(ImVec4(1, 0.4f, 0.3f, 1), "Force tripped: zero until re-armed");
       if (ImGui::Button("Re-arm")) session_->rearm();
     }
-    if (ImGui::Button("Panic: zero force")) session_->panic();
+    if (ImGui::Button("Panic: zero force (Esc)")) session_->panic();
     ImGui::SameLine();
     if (ImGui::Button("Re-arm##always")) session_->rearm();
   } else {

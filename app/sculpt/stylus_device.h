@@ -50,6 +50,8 @@ class StylusDevice {
   /// The camera turns the device's axes (right on the device is right on the screen).
   void setView(const render::Camera& camera);
   void setFocused(bool focused);
+  /// Zero force until re-armed (the panel's button, Esc in the window).
+  void panic();
 
   /// Force felt as a fraction of the device's limit, for the background's tint (0 when off).
   float forceFraction() const;

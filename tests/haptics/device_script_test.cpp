@@ -218,5 +218,24 @@ TEST(DeviceScript, LoadsAFileAndPrefixesItsErrorsWithTheFileName) {
   std::filesystem::remove_all(dir);
 }
 
+TEST(DeviceScript, TheShippedScriptsLoadWithTheirToolsAndAForeignFormatIsRefused) {
+  const std::filesystem::path assets = std::filesystem::path(SCULPT_SOURCE_DIR) / "assets";
+  const DeviceScript pull = loadDeviceScript(assets / "device_pull.json");
+  EXPECT_EQ(pull.tool, "pull");
+  EXPECT_EQ(pull.mode, ScriptMode::kHand);
+  EXPECT_NEAR(pull.duration(), 3.6, 1e-12);
+  EXPECT_EQ(pull.sample(1.0).buttons, 1u) << "the button is held while pulling";
+  const DeviceScript probe = loadDeviceScript(assets / "device_probe.json");
+  EXPECT_EQ(probe.tool, "probe");
+  for (const ScriptKey& key : probe.keys) EXPECT_EQ(key.buttons, 0u) << "probed with the button up";
+  nlohmann::json bad = {{"format", "sculpt-session"}, {"version", 1}, {"model", "touch"},
+                        {"mode", "trajectory"}, {"keys", {{{"t", 0}, {"position", {0, 0, 0}}, {"buttons", 0}}}}};
+  EXPECT_THROW(parseDeviceScript(bad), std::runtime_error);
+  bad["format"] = "sculpt-device-script";
+  EXPECT_NO_THROW(parseDeviceScript(bad));
+  bad["tool"] = "hammer";
+  EXPECT_THROW(parseDeviceScript(bad), std::runtime_error);
+}
+
 }  // namespace
 }  // namespace sculpt::haptics

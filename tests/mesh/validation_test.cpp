@@ -8,6 +8,8 @@
 #include <algorithm>
 #include <cctype>
 #include <filesystem>
+#include <fstream>
+#include <iterator>
 #include <limits>
 #include <set>
 #include <string>
@@ -366,6 +368,11 @@ TEST(Validation, AssetsAreClean) {
   for (const auto& entry : std::filesystem::directory_iterator(dir)) {
     if (entry.path().extension() != ".json") continue;
     SCOPED_TRACE(entry.path().filename().string());
+    {  // the mock stylus' device scripts live here too (docs/file-formats.md)
+      std::ifstream in(entry.path());
+      const std::string text((std::istreambuf_iterator<char>(in)), std::istreambuf_iterator<char>());
+      if (text.find("\"format\": \"sculpt-device-script\"") != std::string::npos) continue;
+    }
     CellComplex m;
     try {
       m = loadControlMeshJson(entry.path());
