@@ -41,13 +41,9 @@ const char* const kHapticsUsage =
 
 namespace {
 
-using haptics::HapticTool;
 
-HapticTool toolNamed(const std::string& name, bool& paint) {
-  paint = name == "paint";
-  if (name == "pull") return HapticTool::Pull;
-  if (name == "probe" || name == "paint") return HapticTool::Probe;
-  if (name == "inflate") return HapticTool::Inflate;
+haptics::NamedHapticTool toolNamed(const std::string& name) {
+  if (const std::optional<haptics::NamedHapticTool> named = haptics::hapticToolNamed(name)) return *named;
   throw UsageError("--tool " + name + ": expected pull, probe, paint or inflate");
 }
 
@@ -96,9 +92,8 @@ int hapticsCommand(const CliArgs& args, std::string& file) {
   file = args.positional()[0];
   const std::string deviceScriptPath = args.requiredValue("device-script");
   const haptics::DeviceScript deviceScript = haptics::loadDeviceScript(deviceScriptPath);
-  bool paint = false;
-  const HapticTool tool = toolNamed(
-      args.value("tool").value_or(deviceScript.tool.empty() ? "pull" : deviceScript.tool), paint);
+  const auto [tool, paint] =
+      toolNamed(args.value("tool").value_or(deviceScript.tool.empty() ? "pull" : deviceScript.tool));
   const double seconds = args.has("seconds") ? numberIn(args, "seconds", 0.01, 600)
                                              : deviceScript.duration() + 0.5;
   const double factor = args.has("force-factor") ? numberIn(args, "force-factor", 1e-6, 1e6) : 1.0;

@@ -513,7 +513,7 @@ void SculptApp::frame(int fbWidth, int fbHeight, bool interactive) {
   const float pixelScale = ImGui::GetIO().DisplayFramebufferScale.x;
   glViewport(0, 0, fbWidth, fbHeight);
   glDisable(GL_SCISSOR_TEST);
-  clearBackground(false, stylus_.tintBackground() ? stylus_.forceFraction() : 0.0f);
+  clearBackground(false, stylus_.backgroundTint());
   drawScene(view, fbWidth, fbHeight, pixelScale);
   if (interactive && view_.hasGeometry()) {
     // Depth under the cursor, for the pivot (double click) and the Stylus preset's

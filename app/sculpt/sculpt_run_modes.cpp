@@ -60,7 +60,7 @@ void SculptApp::writeScreenshot(const std::string& path, const ScreenshotSetting
   render::OffscreenTarget target(width * s, height * s);
   target.bind();
   glViewport(0, 0, width * s, height * s);
-  clearBackground(settings.transparent, stylus_.tintBackground() ? stylus_.forceFraction() : 0.0f);
+  clearBackground(settings.transparent, stylus_.backgroundTint());
   drawScene(view, width * s, height * s, pixelScale * static_cast<float>(s));
   if (panels) {
     ImDrawData* drawData = ImGui::GetDrawData();

@@ -53,9 +53,10 @@ class StylusDevice {
   /// Zero force until re-armed (the panel's button, Esc in the window).
   void panic();
 
-  /// Force felt as a fraction of the device's limit, for the background's tint (0 when off).
+  /// Force felt as a fraction of the device's limit (0 when off).
   float forceFraction() const;
-  bool tintBackground() const { return tint_; }
+  /// The background's tint in [0, 1]: the force fraction, or 0 when tinting is switched off.
+  float backgroundTint() const { return tint_ ? forceFraction() : 0.0f; }
   /// The device panel (an ImGui window), first placed at the upper left of the view.
   void drawPanel(ImVec2 viewMin, ImVec2 viewMax);
   /// The stylus' cursor and, when probing or painting, its brush radius, in the view.

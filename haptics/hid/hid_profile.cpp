@@ -11,6 +11,7 @@
 #include <system_error>
 
 #include "io/file_error.h"
+#include "io/json_fields.h"
 
 namespace sculpt::haptics {
 namespace {
@@ -41,15 +42,8 @@ class ObjectReader {
   std::string field(const char* key) const { return path_.empty() ? key : path_ + "." + key; }
 
   void allowOnly(std::initializer_list<const char*> keys) const {
-    for (auto it = object_.begin(); it != object_.end(); ++it) {
-      const bool known =
-          std::any_of(keys.begin(), keys.end(), [&](const char* key) { return it.key() == key; });
-      if (!known) {
-        std::string list;
-        for (const char* key : keys) list += std::string(list.empty() ? "" : ", ") + key;
-        fail(field(it.key().c_str()), "unknown field (expected " + list + ")");
-      }
-    }
+    if (const std::optional<std::string> unknown = unknownJsonField(object_, keys))
+      fail(field(unknown->c_str()), "unknown field (expected " + jsonFieldList(keys) + ")");
   }
 
   bool has(const char* key) const { return object_.contains(key); }

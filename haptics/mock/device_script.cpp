@@ -10,6 +10,9 @@
 
 #include <nlohmann/json.hpp>
 
+#include "haptics/servo/haptic_tool.h"
+#include "io/json_fields.h"
+
 namespace sculpt::haptics {
 namespace {
 
@@ -39,14 +42,9 @@ std::string quoted(const std::string& name) { return cat("\"", name, "\""); }
 /// Rejects fields outside `known` (a misspelt "clutch" would otherwise be ignored silently).
 void onlyKnownFields(const json& object, const std::string& where,
                      std::initializer_list<const char*> known) {
-  for (const auto& item : object.items()) {
-    if (std::none_of(known.begin(), known.end(), [&](const char* k) { return item.key() == k; })) {
-      std::string list;
-      for (const char* k : known) list += cat(list.empty() ? "" : ", ", k);
-      fail(where.empty() ? std::string() : cat(where, ": "), "unknown field ", quoted(item.key()),
-           " (expected ", list, ")");
-    }
-  }
+  if (const std::optional<std::string> unknown = unknownJsonField(object, known))
+    fail(where.empty() ? std::string() : cat(where, ": "), "unknown field ", quoted(*unknown),
+         " (expected ", jsonFieldList(known), ")");
 }
 
 const json& required(const json& object, const char* key, const std::string& path,
@@ -195,9 +193,7 @@ DeviceScript parseDeviceScript(const nlohmann::json& script) {
 
   DeviceScript result;
   if (const auto tool = script.find("tool"); tool != script.end()) {
-    static const char* const kTools[] = {"pull", "probe", "paint", "inflate"};
-    if (!tool->is_string() ||
-        std::none_of(std::begin(kTools), std::end(kTools), [&](const char* t) { return *tool == t; }))
+    if (!tool->is_string() || !hapticToolNamed(tool->get<std::string>()))
       fail("\"tool\" must be \"pull\", \"probe\", \"paint\" or \"inflate\", got ", tool->dump());
     result.tool = tool->get<std::string>();
   }

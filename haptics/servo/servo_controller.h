@@ -19,12 +19,11 @@
 #include "haptics/device/haptic_device.h"
 #include "haptics/servo/coupling.h"
 #include "haptics/servo/force_safety.h"
+#include "haptics/servo/haptic_tool.h"
 #include "haptics/servo/workspace_mapping.h"
 #include "scene/scene_probe.h"
 
 namespace sculpt::haptics {
-
-enum class HapticTool { None, Pull, Probe, Inflate };
 
 /// What the session tells the servo (published to it wait-free).
 struct ServoCommand {

@@ -230,12 +230,7 @@ void HapticSession::run() {
     command.focused = focused;
     command.panic = panic;
     servo_.command(command);
-    publishStatus(hand, clutching);
-    {
-      const std::lock_guard lock(mutex_);
-      status_.stroking = stroke != 0;
-      status_.tool = tool;
-    }
+    publishStatus(hand, clutching, stroke != 0, tool);
   }
   ToolInput last;
   last.position = mapping_.toScene(servo_.latest().device.position);
@@ -246,8 +241,11 @@ void HapticSession::run() {
   servo_.command(idle);
 }
 
-void HapticSession::publishStatus(const HandState& hand, bool clutching) {
+void HapticSession::publishStatus(const HandState& hand, bool clutching, bool stroking,
+                                  HapticTool tool) {
   const std::lock_guard lock(mutex_);
+  status_.stroking = stroking;
+  status_.tool = tool;
   status_.connected = hand.device.connected;
   status_.buttons = hand.device.buttons;
   status_.clutching = clutching;

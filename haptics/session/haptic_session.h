@@ -106,7 +106,7 @@ class HapticSession {
  private:
   void run();
   std::unique_ptr<Tool> makeTool(HapticTool tool, bool paint) const;
-  void publishStatus(const HandState& hand, bool clutching);
+  void publishStatus(const HandState& hand, bool clutching, bool stroking, HapticTool tool);
 
   SimulationLoop& loop_;
   HapticDevice& device_;
