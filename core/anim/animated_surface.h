@@ -29,6 +29,8 @@ struct SurfaceFrameData {
   std::vector<float> positions;      ///< 3 per vertex
   std::vector<float> normals;        ///< 3 per vertex, unit length
   std::vector<float> sourceNormals;  ///< 3 per source normal
+  /// Set false before evaluating when only positions are needed (normals cost more than them).
+  bool withNormals = true;
 };
 
 /// Per cell of the level-K solid: the painted material, as the window shows it.

@@ -49,8 +49,13 @@ double meanEdgeLength(const VolumeMesh& mesh) {
 
 EmbeddedDeformer::EmbeddedDeformer(VolumeMesh rest, const Points& points,
                                    const DeformerSettings& settings, ProgressReporter* progress)
-    : rest_(std::move(rest)) {
-  embedding_ = embedPoints(rest_, points, progress);
+    : EmbeddedDeformer(rest, points, embedPoints(rest, points, progress), settings) {}
+
+EmbeddedDeformer::EmbeddedDeformer(VolumeMesh rest, const Points& points, Embedding embedding,
+                                   const DeformerSettings& settings)
+    : rest_(std::move(rest)), embedding_(std::move(embedding)) {
+  if (embedding_.numPoints() != points.rows())
+    throw std::invalid_argument("the embedding does not match the points");
   gradientWeights_ = cellToNodeWeights(rest_, settings.eps);
   gradientStencil_ =
       nodeGradientStencil(rest_, cellGradientOperator(rest_), gradientWeights_);

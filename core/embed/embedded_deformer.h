@@ -51,6 +51,9 @@ class EmbeddedDeformer {
   /// empty mesh, non-finite points or bad settings.
   EmbeddedDeformer(VolumeMesh rest, const Points& points, const DeformerSettings& settings = {},
                    ProgressReporter* progress = nullptr);
+  /// The same with the embedding of `points` already made (embedPoints(rest, points)).
+  EmbeddedDeformer(VolumeMesh rest, const Points& points, Embedding embedding,
+                   const DeformerSettings& settings = {});
 
   const VolumeMesh& rest() const { return rest_; }
   const Embedding& embedding() const { return embedding_; }

@@ -219,6 +219,7 @@ std::optional<SceneBuildPhase1> buildPhase1(const SceneSource& source,
   geometry->restNormals = vertexNormals(shape.display);
   geometry->triangles = triangulate(shape.display);
   if (geometry->triangles.empty()) throw std::runtime_error("the surface has no faces to draw");
+  geometry->surface = std::make_shared<const SurfaceMesh>(std::move(shape.display));
   clock.lap("normals");
 
   // The solid at level K and its cells

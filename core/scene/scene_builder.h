@@ -31,6 +31,7 @@
 #include "embed/solid_cell_mesh.h"
 #include "fem/material.h"
 #include "mesh/cell_complex.h"
+#include "mesh/surface_mesh.h"
 #include "mesh/volume_mesh.h"
 #include "project/project.h"
 #include "sim/simulator.h"
@@ -88,6 +89,9 @@ struct SceneGeometry {
   /// Display surface: #V by 3 rest positions and unit normals, 3 vertex indices per triangle.
   Points restPositions, restNormals;
   std::vector<uint32_t> triangles;
+  /// The same surface as its file has it (positions in file order, faces with their texture and
+  /// normal indices, texture coordinates, normals), for the writers that keep it.
+  std::shared_ptr<const SurfaceMesh> surface;
 
   /// The level-K cells (solid_cell_mesh.h: hexahedra, and tetrahedra around a centre node for
   /// cells that are not hexahedra) and the embedding of restPositions in them.

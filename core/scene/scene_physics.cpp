@@ -65,6 +65,8 @@ std::unique_ptr<ScenePhysics> ScenePhysics::build(std::shared_ptr<const SceneGeo
     throw std::runtime_error("cannot simulate " + g.description + ": " + error);
   }
   physics->model_ = std::make_unique<FemModel>(std::move(*model));
+  physics->surfaceMap_ = std::make_shared<const SceneSurfaceMap>(
+      physics->geometry_, physics->solid_, physics->model_->subdivision().chain);
   const FemMesh& mesh = physics->model_->mesh();
   // The element plan of phase 1 must be the FEM's.
   const ElementCounts counts = mesh.counts();
@@ -260,7 +262,15 @@ std::string ScenePhysics::applyLive(const SceneSettings& settings) {
   return {};
 }
 
+void ScenePhysics::cellMaterialFields(std::vector<float>& youngs, std::vector<float>& density,
+                                      std::vector<float>& damping) const {
+  toCells(*geometry_, elementYoungs_, youngs);
+  toCells(*geometry_, elementDensity_, density);
+  toCells(*geometry_, elementDamping_, damping);
+}
+
 void ScenePhysics::updateMaterialFields() {
+  ++materialVersion_;
   // Volume-weighted means over each element's Gauss points.
   const FemMesh& mesh = model_->mesh();
   elementYoungs_.assign(mesh.numElements(), 0.0);
@@ -280,13 +290,11 @@ void ScenePhysics::updateMaterialFields() {
 }
 
 void ScenePhysics::updateState() {
-  const SceneGeometry& g = *geometry_;
   // Node displacements A (p - p_rest): the rest state gives the rest nodes exactly.
   Points displacement;
   model_->nodesFromControl(simulator_->positions() - model_->restControl(), displacement);
   femNodes_ = model_->mesh().restNodes + displacement;
-  const uint32_t vertices = solid_->centres.numVertices;
-  nodes_ = g.cellMesh.positions + solid_->centres.nodePositions(displacement.topRows(vertices));
+  surfaceMap_->cellNodesFromDisplacement(displacement, nodes_);
   applyNodeGradientStencil(solid_->stencil, nodes_, gradients_);
   picker_.reset();
   // Strain energy density with the rotations of this state (as Simulator::elasticEnergy).
@@ -304,9 +312,7 @@ void ScenePhysics::fillFrame(SceneFrame& frame) const {
   frame.nodes = nodes_;
   frame.gradients = gradients_;
   frame.control = simulator_->positions();
-  toCells(g, elementYoungs_, frame.cellYoungs);
-  toCells(g, elementDensity_, frame.cellDensity);
-  toCells(g, elementDamping_, frame.cellDamping);
+  cellMaterialFields(frame.cellYoungs, frame.cellDensity, frame.cellDamping);
   toCells(g, elementEnergyDensity_, frame.cellStrainEnergy);
   frame.simulatedTime = simulatedTime();
   frame.stepMs = lastStepMs_;

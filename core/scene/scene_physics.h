@@ -17,6 +17,7 @@
 #include "scene/scene_builder.h"
 #include "project/project.h"
 #include "scene/material_picker.h"
+#include "scene/scene_surface_map.h"
 #include "tools/material_brush.h"
 #include "tools/session_script.h"
 #include "tools/tool.h"
@@ -63,6 +64,8 @@ class ScenePhysics : private ToolContext {
 
   const SceneGeometry& geometry() const { return *geometry_; }
   const std::shared_ptr<const SceneGeometry>& sharedGeometry() const { return geometry_; }
+  /// Control points to drawn nodes, shareable beyond this physics' life (scene_surface_map.h).
+  const std::shared_ptr<const SceneSurfaceMap>& surfaceMap() const { return surfaceMap_; }
   FemModel& model() { return *model_; }
   Simulator& simulator() override { return *simulator_; }
 
@@ -99,6 +102,11 @@ class ScenePhysics : private ToolContext {
   /// Per FEM element: strain energy density (J/m^3) in the current state and rest volume (m^3).
   const std::vector<double>& elementStrainEnergyDensity() const { return elementEnergyDensity_; }
   const std::vector<double>& elementVolume() const { return elementVolume_; }
+  /// Per cell-mesh cell, the painted material's mean Young's modulus, density and damping (as
+  /// SceneFrame's cell fields); materialVersion() changes whenever they do.
+  void cellMaterialFields(std::vector<float>& youngs, std::vector<float>& density,
+                          std::vector<float>& damping) const;
+  uint64_t materialVersion() const { return materialVersion_; }
   double simulatedTime() const;
 
  private:
@@ -114,6 +122,8 @@ class ScenePhysics : private ToolContext {
 
   std::shared_ptr<const SceneGeometry> geometry_;
   std::shared_ptr<const SceneSolid> solid_;
+  std::shared_ptr<const SceneSurfaceMap> surfaceMap_;
+  uint64_t materialVersion_ = 0;
   std::unique_ptr<FemModel> model_;
   std::unique_ptr<Simulator> simulator_;
   Form* gravityLoad_ = nullptr;

@@ -283,6 +283,7 @@ void SimulationLoop::notifyStep(ScenePhysics& physics, const StepReport& report)
   state.simulatedTime = physics.simulatedTime();
   state.control = &physics.simulator().positions();
   state.report = &report;
+  state.physics = &physics;
   for (const auto& observer : observers) (*observer)(state);
 }
 

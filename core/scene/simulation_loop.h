@@ -43,6 +43,9 @@ struct StepState {
   double simulatedTime = 0.0;  ///< s since the last reset
   const Points* control = nullptr;  ///< the control points
   const StepReport* report = nullptr;
+  /// The scene that stepped: for what else an observer reads on this thread (its surface map,
+  /// its painted fields). Not to be kept or changed.
+  const ScenePhysics* physics = nullptr;
 };
 using StepObserver = std::function<void(const StepState&)>;
 

@@ -1,0 +1,58 @@
+#pragma once
+// A take (take.h) as an AnimatedSurface: the frames' control points turned into the embedded
+// surface with the CPU Phong deformation (embed/embedded_deformer.h, the reference the GPU
+// deformer is tested against) and into the level-K solid (scene/scene_surface_map.h), on demand,
+// optionally over a range of the take's frames.
+
+#include <memory>
+#include <optional>
+#include <vector>
+
+#include "anim/animated_surface.h"
+#include "anim/take.h"
+#include "embed/embedded_deformer.h"
+#include "embed/interpolation_method.h"
+
+namespace sculpt {
+
+class TakeSurface : public AnimatedSurface {
+ public:
+  /// Frames [range.first, range.first + range.count) of `take` (count 0: to the end). Throws
+  /// std::invalid_argument for an empty take or a range outside it.
+  explicit TakeSurface(std::shared_ptr<const Take> take, FrameRange range = {},
+                       InterpolationMethod method = InterpolationMethod::Phong);
+  ~TakeSurface() override;
+
+  double fps() const override { return take_->fps(); }
+  uint32_t frameCount() const override { return range_.count; }
+  uint32_t segmentCount() const override { return static_cast<uint32_t>(segments_.size()); }
+  FrameRange segment(uint32_t s) const override { return segments_[s].frames; }
+  const SurfaceMesh& restSurface(uint32_t s) const override;
+  const std::vector<float>& restVertexNormals(uint32_t s) const override;
+  const std::vector<uint32_t>& triangles(uint32_t s) const override;
+  const VolumeMesh& restSolid(uint32_t s) const override;
+  void evaluateSurface(uint32_t frame, SurfaceFrameData& out) const override;
+  void evaluateSolid(uint32_t frame, SolidFrameData& out) const override;
+
+  /// Vertices of the largest segment's surface (for size estimates).
+  uint32_t maxVertices() const;
+
+ private:
+  struct Segment {
+    std::shared_ptr<const SceneSurfaceMap> surface;
+    FrameRange frames;  // in this view's frame numbers
+    std::vector<float> restNormals;
+    std::vector<uint32_t> normalAnchors;  // of the source surface's own normals
+    mutable std::unique_ptr<EmbeddedDeformer> deformer;  // made on first use
+  };
+  const Segment& segmentFor(uint32_t frame) const;
+  EmbeddedDeformer& deformer(const Segment& segment) const;
+
+  std::shared_ptr<const Take> take_;
+  FrameRange range_;
+  InterpolationMethod method_;
+  std::vector<Segment> segments_;
+  mutable Points control_, nodes_;
+};
+
+}  // namespace sculpt
