@@ -35,6 +35,7 @@ PACKAGES=(
   tetgen             # irregular tetrahedral meshes for the Phong deformation tests
   xvfb               # xvfb-run: window tests without a display
   xauth              # needed by xvfb-run
+  ffmpeg             # sculpt --record-out NAME.mp4 (H.264); ffprobe checks it in the GUI tests
 )
 
 log() { printf '[install-deps] %s\n' "$*"; }

@@ -1,7 +1,7 @@
 #!/usr/bin/env bash
 # Installs the Khronos glTF validator (npm package "gltf-validator") into a cache directory, with
 # a small command-line wrapper, so that tests/io/surface_io_test.cpp can check the glTF files we
-# write. Optional: the test is skipped when the validator is not installed.
+# write (tests/io, tests/anim). The tests fail when it is not installed.
 #
 #   scripts/install-gltf-validator.sh            # into ${XDG_CACHE_HOME:-~/.cache}/sculpt/gltf-validator
 #   SCULPT_GLTF_VALIDATOR_DIR=DIR scripts/install-gltf-validator.sh

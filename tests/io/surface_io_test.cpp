@@ -547,8 +547,9 @@ std::filesystem::path gltfValidatorScript() {
 
 TEST_F(SurfaceIoTest, WrittenFilesPassTheKhronosValidator) {
   const auto script = gltfValidatorScript();
-  if (script.empty()) GTEST_SKIP() << "run scripts/install-gltf-validator.sh to enable";
-  if (std::system("node --version > /dev/null 2>&1") != 0) GTEST_SKIP() << "node is not installed";
+  ASSERT_FALSE(script.empty()) << "the glTF validator is missing: run scripts/install-gltf-validator.sh";
+  ASSERT_EQ(std::system("node --version > /dev/null 2>&1"), 0)
+      << "node is missing: scripts/install-deps.sh installs it";
 
   const LoadedSurface quad = readSurfaceFile(writeText("quad.glb", QuadModel().glb()));
   SurfaceMesh deformed = quad.surface();
