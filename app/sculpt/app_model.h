@@ -13,6 +13,7 @@
 #include "render/camera.h"
 #include "sculpt/display_settings.h"
 #include "sculpt/navigation.h"
+#include "sculpt/record_state.h"
 #include "scene/scene_controller.h"
 #include "sculpt/scene_view.h"
 #include "sculpt/tool_state.h"
@@ -39,6 +40,7 @@ struct Requests {
   std::string saveAs;            ///< a path to save the project to; empty: none
   bool closeSave = false, closeDiscard = false;  ///< answers to the unsaved-changes prompt
   bool recover = false, discardRecovery = false;  ///< answers to the recovery offer
+  RecordRequests record;  ///< recording, the timeline and the export dialog
 };
 
 /// The document as the panels show it (document.h keeps the real state).
@@ -92,6 +94,8 @@ struct AppModel {
   bool openOpenDialog = false;    ///< Ctrl+O (next frame)
   /// The topology tool's face selection and hover, as "cell c, face f" for the panel.
   std::string topologySelection;
+  RecordStatus record;
+  ExportDialog exportDialog;
 
   void toast(std::string text, bool error = false, double seconds = 4.0) {
     toasts.push_back({std::move(text),

@@ -64,9 +64,10 @@ int main(int argc, char** argv) {
   int status = 0;
   try {
     sculpt::app::SculptApp app(window, options, started, std::move(preferences), preferencesFile);
-    status = options.benchFrames > 0 ? app.runBenchmark()
-             : options.headless      ? app.runHeadless()
-                                     : app.runWindow();
+    status = options.benchFrames > 0      ? app.runBenchmark()
+             : options.recordSeconds > 0.0 ? app.runRecording()
+             : options.headless            ? app.runHeadless()
+                                           : app.runWindow();
   } catch (const std::exception& error) {
     std::cerr << "error: " << error.what() << '\n';
     status = 2;

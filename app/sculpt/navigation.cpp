@@ -44,6 +44,7 @@ constexpr std::array<ActionInfo, kActionCount> kActions{{
     {Action::StepOnce, "step_once", "Step once (when paused)", ActionGroup::Simulation},
     {Action::ResetSimulation, "reset_simulation", "Reset to the rest shape",
      ActionGroup::Simulation},
+    {Action::ToggleRecord, "toggle_record", "Record / stop recording", ActionGroup::Simulation},
     {Action::ToggleWireframe, "toggle_wireframe", "Wireframe on / off", ActionGroup::Display},
     {Action::ToggleFlatShading, "toggle_flat_shading", "Flat / smooth shading",
      ActionGroup::Display},
@@ -274,7 +275,8 @@ KeyMap KeyMap::defaults() {
   bind(GLFW_KEY_SPACE, kNone, Action::PlayPause);
   bind(GLFW_KEY_PERIOD, kNone, Action::StepOnce);
   bind(GLFW_KEY_RIGHT, kNone, Action::StepOnce);
-  bind(GLFW_KEY_R, kNone, Action::ResetSimulation);
+  bind(GLFW_KEY_R, kShift, Action::ResetSimulation);
+  bind(GLFW_KEY_R, kNone, Action::ToggleRecord);
   // Display
   bind(GLFW_KEY_Z, kNone, Action::ToggleWireframe);
   bind(GLFW_KEY_Z, kShift, Action::ToggleFlatShading);

@@ -49,6 +49,7 @@ enum class Action {
   PlayPause,
   StepOnce,
   ResetSimulation,
+  ToggleRecord,
   // Display
   ToggleWireframe,
   ToggleFlatShading,

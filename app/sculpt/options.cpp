@@ -1,8 +1,11 @@
 #include "sculpt/options.h"
 
+#include <cmath>
 #include <cstdio>
 #include <iostream>
 #include <stdexcept>
+
+#include "anim/recorder.h"
 
 namespace sculpt::app {
 
@@ -31,6 +34,12 @@ const char* const kUsage =
     "  --transparent          screenshot with a transparent background\n"
     "  --no-ui                headless: the 3D view without panels\n"
     "  --bench N              headless: time N frames and print key=value figures\n"
+    "  --record-seconds T     headless: record T simulated seconds of the scene (after --script\n"
+    "                         starts) and write each --record-out\n"
+    "  --record-out OUT       repeatable: a .glb, .pc2, .mdd, name_####.obj/.vtk/.vtu, or\n"
+    "                         rendered as the screenshot is: name_####.png, name.mp4 (ffmpeg)\n"
+    "  --fps F                frames per simulated second of a take (default 30; the window's\n"
+    "                         Record too)\n"
     "  --size WxH             window size (default 1280x800)\n"
     "  --quit-after SECONDS   close the window that long after the first frame with the scene\n"
     "                         (smoke tests)\n";
@@ -144,6 +153,14 @@ Options parseOptions(int argc, char** argv, bool* helpShown) {
       options.noUi = true;
     } else if (arg == "--bench") {
       options.benchFrames = intIn(arg, value(), 1, 100000);
+    } else if (arg == "--record-seconds") {
+      options.recordSeconds = positive(arg, value());
+    } else if (arg == "--record-out") {
+      options.recordOut.push_back(value());
+    } else if (arg == "--fps") {
+      options.recordFps = positive(arg, value());
+      if (const std::string problem = frameRateProblem(options.recordFps); !problem.empty())
+        throw std::invalid_argument("--fps: " + problem);
     } else if (arg == "--size") {
       const std::string size = value();
       options.sizeGiven = true;
@@ -166,9 +183,18 @@ Options parseOptions(int argc, char** argv, bool* helpShown) {
     }
   }
   if (options.benchFrames > 0) options.headless = true;
+  if ((options.recordSeconds > 0.0) != !options.recordOut.empty())
+    throw std::invalid_argument("--record-seconds and --record-out go together");
+  if (options.recordSeconds > 0.0 && !options.headless)
+    throw std::invalid_argument("--record-seconds needs --headless");
+  if (options.recordSeconds > 0.0 &&
+      std::lround(options.recordSeconds * options.recordFps) + 1 > kMaxTakeFrames)
+    throw std::invalid_argument("--record-seconds x --fps must stay under " +
+                                std::to_string(kMaxTakeFrames) + " frames");
   if (options.headless && options.screenshot.empty() && options.out.empty() &&
-      options.benchFrames == 0)
-    throw std::invalid_argument("--headless needs --screenshot OUT.png, --out FINAL.vtk or --bench N");
+      options.benchFrames == 0 && options.recordSeconds == 0.0)
+    throw std::invalid_argument(
+        "--headless needs --screenshot OUT.png, --out FINAL.vtk, --record-seconds T or --bench N");
   if (!options.headless &&
       (framesGiven || !options.screenshot.empty() || !options.out.empty() || options.noUi))
     throw std::invalid_argument("--frames, --screenshot, --out and --no-ui need --headless");

@@ -3,10 +3,12 @@
 //   sculpt [--scene FILE] [--level K] [--dt S] [--method M] [--field F] [--clip x|y|z] [--wireframe]
 //          [--show-cells] [--show-control] [--preset blender|stylus] [--ui-scale S]
 //          [--headless [--screenshot OUT.png] [--out FINAL.vtk] [--frames N] [--supersample 1|2|4] [--transparent]
-//           [--no-ui]] [--size WxH] [--quit-after SECONDS] [--bench N]
+//           [--no-ui] [--record-seconds T [--fps F] --record-out OUT ...]] [--size WxH]
+//          [--quit-after SECONDS] [--bench N]
 
 #include <optional>
 #include <string>
+#include <vector>
 
 #include "sculpt/display_settings.h"
 
@@ -34,6 +36,9 @@ struct Options {
   bool sizeGiven = false;  ///< --size given (else the window takes its saved size)
   double quitAfter = 0.0;  ///< window mode: close this long after the first frame with the scene
   int benchFrames = 0;     ///< headless: time N frames (sculpt --bench) instead of a screenshot
+  double recordSeconds = 0.0;  ///< headless: record this much simulated time (0: no recording)
+  double recordFps = 30.0;     ///< frames per simulated second of a take (the window's too)
+  std::vector<std::string> recordOut;  ///< headless: the take's outputs (the name picks the format)
 };
 
 extern const char* const kUsage;

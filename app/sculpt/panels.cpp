@@ -5,6 +5,7 @@
 #include <string>
 
 #include "sculpt/colour_bar.h"
+#include "sculpt/record_panel.h"
 #include "sculpt/tool_panel.h"
 
 namespace sculpt::app {
@@ -34,6 +35,8 @@ void menuBar(AppModel& m) {
         if (ImGui::MenuItem(path.c_str())) r.loadScene = path;
       ImGui::EndMenu();
     }
+    if (ImGui::MenuItem("Export recording...", nullptr, false, m.record.hasTake && !m.record.recording))
+      m.exportDialog.show = true;
     if (ImGui::MenuItem("Screenshot", "F12")) r.screenshot = true;
     if (ImGui::BeginMenu("Screenshot options")) {
       ImGui::RadioButton("1x", &m.screenshot.supersample, 1);
@@ -79,7 +82,8 @@ void menuBar(AppModel& m) {
   if (ImGui::BeginMenu("Simulation")) {
     if (ImGui::MenuItem(m.status.playing ? "Pause" : "Play", "Space")) r.togglePlay = true;
     if (ImGui::MenuItem("Step", ".")) r.stepOnce = true;
-    if (ImGui::MenuItem("Reset", "R")) r.reset = true;
+    if (ImGui::MenuItem("Reset", "Shift+R")) r.reset = true;
+    if (ImGui::MenuItem(m.record.recording ? "Stop recording" : "Record", "R")) r.record.toggleRecord = true;
     ImGui::EndMenu();
   }
   if (ImGui::BeginMenu("Help")) {
@@ -332,6 +336,7 @@ void bottomStrip(AppModel& m, ImVec2 pos, ImVec2 size) {
               s.simulatedTime, s.frameMs, s.simulationMs, s.stepsPerSecond, s.sceneDrawMs,
               static_cast<double>(s.uploadBytes) / 1024.0, s.triangles, s.elementCounts[0],
               s.elementCounts[1], s.elementCounts[2], s.physicsReady ? "" : " | preparing physics");
+  drawRecordStrip(m);
   ImGui::End();
 }
 
@@ -340,13 +345,15 @@ void bottomStrip(AppModel& m, ImVec2 pos, ImVec2 size) {
 ViewRect drawPanels(AppModel& m) {
   menuBar(m);
   dialogs(m);
+  drawExportDialog(m);
   const ImGuiViewport* viewport = ImGui::GetMainViewport();
   ImVec2 min = viewport->WorkPos;
   ImVec2 max(viewport->WorkPos.x + viewport->WorkSize.x, viewport->WorkPos.y + viewport->WorkSize.y);
   if (!m.showPanels) return {min, max};
   const float left = std::min(scaled(220), 0.25f * viewport->WorkSize.x);
   const float right = std::min(scaled(320), 0.35f * viewport->WorkSize.x);
-  const float bottom = ImGui::GetFrameHeightWithSpacing() + 2 * ImGui::GetStyle().WindowPadding.y;
+  // Two rows: the simulation's buttons and status, then recording and the timeline.
+  const float bottom = 2 * ImGui::GetFrameHeightWithSpacing() + 2 * ImGui::GetStyle().WindowPadding.y;
   toolPanel(m, min, ImVec2(left, max.y - min.y - bottom));
   rightPanel(m, ImVec2(max.x - right, min.y), ImVec2(right, max.y - min.y - bottom));
   bottomStrip(m, ImVec2(min.x, max.y - bottom), ImVec2(max.x - min.x, bottom));

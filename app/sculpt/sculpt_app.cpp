@@ -75,6 +75,7 @@ SculptApp::SculptApp(GLFWwindow* window, const Options& options, Clock::time_poi
   if (!options.headless) stylus_.enableHid();
   model_.screenshot.supersample = options.supersample;
   model_.screenshot.transparent = options.transparent;
+  model_.record.fps = options.recordFps;
 
   IMGUI_CHECKVERSION();
   ImGui::CreateContext();
@@ -120,6 +121,8 @@ SculptApp::SculptApp(GLFWwindow* window, const Options& options, Clock::time_poi
 
 SculptApp::~SculptApp() {
   if (!options_.headless) savePreferencesOnClose();
+  export_.reset();     // cancels an export in flight
+  recording_.reset();  // its recorder observes the controller's loop
   controller_.reset();  // stop the simulation before the GL objects go
   if (imguiReady_) {
     ImGui_ImplOpenGL3_Shutdown();
@@ -166,6 +169,7 @@ void SculptApp::syncScene() {
   controller_->advance(!view_.hasGeometry());
   if (std::shared_ptr<const SceneGeometry> geometry = controller_->takeNewGeometry()) {
     sceneChanged_ = true;
+    liveGeometry_ = geometry;
     const auto uploadStart = Clock::now();
     view_.setGeometry(geometry);
     geometryUploadSeconds_ = secondsSince(uploadStart);
@@ -210,7 +214,7 @@ void SculptApp::syncScene() {
   }
   if (controller_->fetchNewer(latest_)) {
     sceneChanged_ = true;
-    view_.setFrame(latest_, model_.display);
+    if (recording_->isLive()) view_.setFrame(latest_, model_.display);
     model_.status.simulationMs = latest_.stepMs;
     model_.status.simulatedTime = latest_.simulatedTime;
     model_.status.physicsReady = latest_.physicsReady;
@@ -260,6 +264,7 @@ void SculptApp::runAction(Action action) {
     case Action::PlayPause: r.togglePlay = true; break;
     case Action::StepOnce: r.stepOnce = true; break;
     case Action::ResetSimulation: r.reset = true; break;
+    case Action::ToggleRecord: r.record.toggleRecord = true; break;
     case Action::ToggleWireframe: d.wireframe = !d.wireframe; break;
     case Action::ToggleFlatShading: d.flatShading = !d.flatShading; break;
     case Action::ToggleCellEdges: d.showCells = !d.showCells; break;
@@ -319,7 +324,7 @@ void SculptApp::handleInput(const ViewRect& view) {
   const int height = std::max(1, static_cast<int>(view.max.y - view.min.y));
   const PointerResult result = navigator_.update(input, camera_, width, height);
   if (result.cameraChanged || result.gesture != Gesture::None) sceneChanged_ = true;
-  if (!brushKeyHeld) toolStroke(result, input.x, input.y, width, height);
+  if (!brushKeyHeld && recording_->isLive()) toolStroke(result, input.x, input.y, width, height);
   if (model_.tools.tool == ToolKind::Topology && !io.WantCaptureMouse && result.gesture == Gesture::None)
     hoverFace_ = pickFace(input.x, input.y, width, height);
   model_.topologySelection =
@@ -336,6 +341,7 @@ void SculptApp::handleInput(const ViewRect& view) {
 
 void SculptApp::carryOutRequests() {
   Requests r = std::exchange(model_.requests, Requests{});
+  carryOutRecordRequests(r.record);
   if (r.screenshot || r.frameModel || r.frameAll || r.standardView || r.toggleOrthographic ||
       r.togglePlay || r.stepOnce || r.reset || r.applySettings || !r.loadScene.empty())
     sceneChanged_ = true;
@@ -482,6 +488,7 @@ void SculptApp::frame(int fbWidth, int fbHeight, bool interactive) {
   model_.status.frameMs = std::chrono::duration<double, std::milli>(now - lastFrameTime_).count();
   lastFrameTime_ = now;
   syncScene();
+  updateRecording();
 
   ImGui_ImplOpenGL3_NewFrame();
   ImGui_ImplGlfw_NewFrame();

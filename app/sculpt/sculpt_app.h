@@ -19,6 +19,8 @@
 #include "project/preferences.h"
 #include "render/gpu_timer.h"
 #include "sculpt/app_model.h"
+#include "sculpt/export_job.h"
+#include "sculpt/recording.h"
 #include "scene/document.h"
 #include "sculpt/navigation.h"
 #include "sculpt/options.h"
@@ -51,6 +53,9 @@ class SculptApp {
   int runHeadless();
   /// Times options.benchFrames frames offscreen and prints key=value figures.
   int runBenchmark();
+  /// Records options.recordSeconds of simulated time and writes every options.recordOut
+  /// (take_rendering.cpp). Returns the exit status.
+  int runRecording();
 
   /// Tests and the documentation's screenshots drive the window through this: called every
   /// frame after the platform input and before the UI, it may set the mouse and keys of
@@ -67,6 +72,14 @@ class SculptApp {
   ViewRect viewRect() const { return lastView_; }
   const SceneView& sceneView() const { return view_; }
   StylusDevice& stylus() { return stylus_; }
+  /// The recording and its timeline (the bottom strip's Record, playhead and Live).
+  Recording& recording() { return *recording_; }
+  /// What the export dialog's Export button does: exports the take as model().exportDialog says
+  /// on a worker thread. False (with a toast) when it cannot start.
+  bool startExport();
+  ExportJob& exportJob() { return *export_; }
+  /// The last export that finished (written, failed or cancelled).
+  const std::optional<ExportJob::Outcome>& lastExport() const { return lastExport_; }
 
  private:
   /// Builds the UI and draws the scene into the bound framebuffer (fbWidth x fbHeight pixels).
@@ -191,6 +204,33 @@ class SculptApp {
   bool awaitingEditedScene_ = false;
   uint64_t scriptSceneId_ = 0;
   void applyScriptTopology();
+
+  // Recording, the timeline and export (sculpt_recording.cpp)
+  void updateRecording();
+  void publishRecordStatus();
+  void carryOutRecordRequests(const RecordRequests& requests);
+  void leaveLive();
+  void goLive();
+  void showPlayhead();
+  void updateExportDialog();
+  std::string defaultExportPath() const;
+  std::unique_ptr<Recording> recording_ = std::make_unique<Recording>();
+  std::unique_ptr<ExportJob> export_ = std::make_unique<ExportJob>();
+  std::optional<ExportJob::Outcome> lastExport_;
+  bool resumePlaying_ = false;  ///< the simulation played when the playhead left Live
+  std::shared_ptr<const SceneGeometry> liveGeometry_;  ///< the controller's newest scene
+  const Take* shownTake_ = nullptr;  ///< the take the view shows a frame of (null: live)
+  uint32_t shownFrame_ = 0;
+  const SceneGeometry* shownGeometry_ = nullptr;  ///< the view's geometry when it was shown
+  const Take* dialogTake_ = nullptr;  ///< the take the export dialog's range and estimate are for
+  int estimatedFirst_ = -1, estimatedLast_ = -1, estimatedFormat_ = -1;
+  // Headless recording (take_rendering.cpp)
+  /// The frame last drawn as writeScreenshot captures it (RGBA8, top row first).
+  std::vector<uint8_t> captureFrame(const ScreenshotSettings& settings, int& width, int& height);
+  /// Renders frames [0, frames) of the recording's take into name_####.png files and videos;
+  /// returns the bytes written. Throws (leaving none of them behind).
+  uint64_t renderTake(const std::vector<std::filesystem::path>& pngs,
+                      const std::vector<std::filesystem::path>& videos, uint32_t frames);
 };
 
 }  // namespace sculpt::app

@@ -46,12 +46,21 @@ void SculptApp::reportFirstFrame() {
 }
 
 void SculptApp::writeScreenshot(const std::string& path, const ScreenshotSettings& settings) {
+  int width = 0, height = 0;
+  const std::vector<uint8_t> pixels = captureFrame(settings, width, height);
+  const std::filesystem::path parent = std::filesystem::path(path).parent_path();
+  if (!parent.empty()) std::filesystem::create_directories(parent);
+  render::writePng(path, width, height, pixels);
+}
+
+std::vector<uint8_t> SculptApp::captureFrame(const ScreenshotSettings& settings, int& width,
+                                             int& height) {
   const int s = settings.supersample;
   const float pixelScale = ImGui::GetIO().DisplayFramebufferScale.x;
   const bool panels = settings.includePanels && !options_.noUi;
   // Without panels the image is the 3D view alone, at its framebuffer size.
   ViewRect view = lastView_;
-  int width = lastFbWidth_, height = lastFbHeight_;
+  width = lastFbWidth_, height = lastFbHeight_;
   if (!panels) {
     width = static_cast<int>(std::lround((view.max.x - view.min.x) * pixelScale));
     height = static_cast<int>(std::lround((view.max.y - view.min.y) * pixelScale));
@@ -75,9 +84,7 @@ void SculptApp::writeScreenshot(const std::string& path, const ScreenshotSetting
   if (s > 1) pixels = render::downsample(pixels, width * s, height * s, s);
   if (!settings.transparent)
     for (size_t i = 3; i < pixels.size(); i += 4) pixels[i] = 255;
-  const std::filesystem::path parent = std::filesystem::path(path).parent_path();
-  if (!parent.empty()) std::filesystem::create_directories(parent);
-  render::writePng(path, width, height, pixels);
+  return pixels;
 }
 
 int SculptApp::runWindow() {

@@ -1,0 +1,65 @@
+#include "sculpt/export_job.h"
+
+#include <sys/resource.h>
+#include <sys/syscall.h>
+#include <unistd.h>
+
+#include <exception>
+#include <utility>
+
+#include "anim/take_surface.h"
+
+namespace sculpt::app {
+
+ExportJob::~ExportJob() {
+  cancel_ = true;
+  if (worker_.joinable()) worker_.join();
+}
+
+bool ExportJob::start(std::shared_ptr<const Take> take, FrameRange range,
+                      std::filesystem::path path, ExportFormat format,
+                      TakeExportOptions options) {
+  if (busy_) return false;
+  if (worker_.joinable()) worker_.join();  // finished: its outcome was collected
+  busy_ = true;
+  cancel_ = false;
+  finished_ = false;
+  fraction_ = 0.0;
+  worker_ = std::thread([this, take = std::move(take), range, path = std::move(path), format,
+                         options] {
+    // Below the window's threads: the export takes the cores the drawing leaves.
+    setpriority(PRIO_PROCESS, static_cast<id_t>(::syscall(SYS_gettid)), 10);
+    Outcome outcome;
+    outcome.path = path;
+    try {
+      // The surface's deformers are built here too: nothing of the export runs on the UI thread.
+      const TakeSurface surface(take, range);
+      ProgressReporter progress([this](double fraction, std::string_view) {
+        fraction_ = fraction;
+        return !cancel_.load();
+      });
+      outcome.result = exportAnimation(surface, path, format, options, &progress);
+      if (outcome.result.cancelled || progress.cancelled())
+        outcome.kind = Outcome::Kind::Cancelled;
+    } catch (const std::exception& error) {
+      outcome.kind = cancel_ ? Outcome::Kind::Cancelled : Outcome::Kind::Failed;
+      outcome.error = error.what();
+    }
+    {
+      const std::lock_guard lock(mutex_);
+      outcome_ = std::move(outcome);
+    }
+    finished_ = true;
+  });
+  return true;
+}
+
+std::optional<ExportJob::Outcome> ExportJob::poll() {
+  if (!busy_ || !finished_) return std::nullopt;
+  worker_.join();  // it has finished: this does not wait
+  busy_ = false;
+  const std::lock_guard lock(mutex_);
+  return std::move(outcome_);
+}
+
+}  // namespace sculpt::app

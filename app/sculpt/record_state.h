@@ -1,0 +1,49 @@
+#pragma once
+// What the panels see of recording, the timeline and the export dialog, and what they ask for
+// (the application carries it out after the UI pass, as with Requests).
+
+#include <array>
+#include <cstdint>
+#include <optional>
+#include <string>
+
+namespace sculpt::app {
+
+/// The geometry formats the export dialog offers, in its combo's order.
+inline constexpr int kExportFormatCount = 6;
+extern const char* const kExportFormatLabels[kExportFormatCount];
+
+struct RecordRequests {
+  bool toggleRecord = false;
+  std::optional<uint32_t> playhead;  ///< scrub to this frame (leaves Live)
+  bool togglePlayback = false, goLive = false;
+  bool startExport = false, cancelExport = false;
+};
+
+struct RecordStatus {
+  double fps = 30.0;  ///< the next take's frame rate (a setting)
+  bool recording = false;
+  uint32_t frames = 0;  ///< of the take being recorded, or of the last take
+  double seconds = 0.0;
+  size_t bytes = 0;
+  bool hasTake = false;  ///< a stopped take with frames exists
+  double takeFps = 30.0;
+  bool live = true;        ///< the view shows the running simulation
+  uint32_t playhead = 0;   ///< the frame shown when not live
+  bool playingBack = false;
+};
+
+struct ExportDialog {
+  bool show = false;
+  int format = 0;  ///< index into kExportFormatLabels
+  std::array<char, 1024> path{};
+  int first = 1, last = 1;  ///< frame range, 1-based and inclusive as shown
+  double keyTolerance = 1e-3;  ///< glTF: of the rest bounding-box diagonal
+  // Filled by the application each frame
+  std::string problem;        ///< why Export is not allowed now; empty: it is
+  uint64_t estimateBytes = 0;
+  bool running = false;
+  double fraction = 0.0;
+};
+
+}  // namespace sculpt::app

@@ -1,0 +1,191 @@
+// Recording in the window: Record, the timeline's playhead (the view shows the take's frame, not
+// the simulation's) and the export dialog's worker, cancelled once and then run to the end while
+// the window keeps drawing at its usual pace. The screenshot goes to $SCULPT_SESSION_IMAGES.
+
+#include "render/gl.h"
+
+#include <GLFW/glfw3.h>
+#include <gtest/gtest.h>
+
+#include <algorithm>
+#include <chrono>
+#include <cstdio>
+#include <cstdlib>
+#include <filesystem>
+#include <string>
+#include <vector>
+
+#include "sculpt/sculpt_app.h"
+#include "support/gl_context.h"
+#include "support/scratch_directory.h"
+
+namespace sculpt::app {
+namespace {
+
+namespace fs = std::filesystem;
+using Clock = std::chrono::steady_clock;
+
+struct FrameTimes {
+  std::vector<double> ms;
+  double median() const {
+    std::vector<double> sorted = ms;
+    std::sort(sorted.begin(), sorted.end());
+    return sorted.empty() ? 0.0 : sorted[sorted.size() / 2];
+  }
+  double max() const { return ms.empty() ? 0.0 : *std::max_element(ms.begin(), ms.end()); }
+};
+
+double timedFrame(SculptApp& app) {
+  const auto start = Clock::now();
+  app.headlessFrame();
+  return std::chrono::duration<double, std::milli>(Clock::now() - start).count();
+}
+
+bool hasToast(const AppModel& model, const std::string& part) {
+  return std::any_of(model.toasts.begin(), model.toasts.end(),
+                     [&](const Toast& t) { return t.text.find(part) != std::string::npos; });
+}
+
+std::vector<std::string> filesIn(const fs::path& folder) {
+  std::vector<std::string> names;
+  for (const fs::directory_entry& entry : fs::directory_iterator(folder))
+    names.push_back(entry.path().filename().string());
+  return names;
+}
+
+TEST(RecordWindow, RecordsScrubsAndExportsWithoutStallingTheWindow) {
+  ASSERT_NE(std::getenv("DISPLAY"), nullptr) << "no X display: run under xvfb-run";
+  ASSERT_TRUE(glfwInit());
+  GLFWwindow* window = sculpt::testing::hiddenGlWindow(1280, 800);
+  ASSERT_NE(window, nullptr);
+  test::ScratchDirectory scratch("record_window");
+  {
+    Options options;
+    options.headless = false;  // the simulation on its own thread, as in the window
+    options.width = 1280, options.height = 800;
+    options.cage = 4;  // a coarser cage: quicker steps and exports
+    SculptApp app(window, options, Clock::now(), LoadedPreferences{},
+                  scratch.path() / "preferences.json");
+    for (int k = 0; k < 400 && !(app.sceneView().hasGeometry() && app.sceneView().frame().physicsReady); ++k)
+      app.headlessFrame();
+    ASSERT_TRUE(app.sceneView().frame().physicsReady);
+
+    // Record (the bottom strip's button) 2 s of simulated time at the default 30 fps, then Stop.
+    app.model().requests.record.toggleRecord = true;
+    app.headlessFrame();
+    ASSERT_TRUE(app.recording().recording());
+    EXPECT_TRUE(app.model().record.recording) << "the strip shows the red dot";
+    for (int k = 0; k < 3000 && app.recording().frameCount() < 61; ++k) app.headlessFrame();
+    app.model().requests.record.toggleRecord = true;
+    app.headlessFrame();
+    ASSERT_FALSE(app.recording().recording());
+    const std::shared_ptr<const Take> take = app.recording().take();
+    ASSERT_NE(take, nullptr);
+    ASSERT_GE(take->frameCount(), 60u);
+    EXPECT_DOUBLE_EQ(take->fps(), 30.0);
+    EXPECT_TRUE(app.recording().isLive());
+    std::printf("[ measured ] take: %u frames, %.2f s, %zu bytes\n", take->frameCount(),
+                take->duration(), take->memoryBytes());
+
+    // Scrub back to frame 10 (what the timeline's slider asks for): the view shows that frame.
+    app.model().requests.record.playhead = 10u;
+    app.headlessFrame();
+    EXPECT_FALSE(app.recording().isLive());
+    EXPECT_EQ(app.recording().playhead(), 10u);
+    Points expected;
+    take->controlPoints(10, expected);
+    const Points& shown = app.sceneView().frame().control;
+    ASSERT_EQ(shown.rows(), expected.rows());
+    EXPECT_EQ((shown - expected).cwiseAbs().maxCoeff(), 0.0) << "the take's frame 10, exactly";
+    app.headlessFrame();
+    EXPECT_FALSE(app.model().status.playing) << "reviewing pauses the simulation";
+
+    // The export dialog, as File > Export recording... opens it.
+    const fs::path folder = scratch.path() / "exports";
+    fs::create_directories(folder);
+    ExportDialog& dialog = app.model().exportDialog;
+    dialog.show = true;
+    app.headlessFrame();
+    EXPECT_NE(std::string(dialog.path.data()).find("bunny_take.glb"), std::string::npos)
+        << dialog.path.data();
+    const std::string glb = (folder / "take.glb").string();
+    std::snprintf(dialog.path.data(), dialog.path.size(), "%s", glb.c_str());
+    app.headlessFrame();
+    EXPECT_EQ(dialog.problem, "");
+    EXPECT_GT(dialog.estimateBytes, 0u);
+    EXPECT_EQ(dialog.first, 1);
+    EXPECT_EQ(dialog.last, static_cast<int>(take->frameCount()));
+
+    // The same view without an export: llvmpipe's own frame-to-frame spread on this machine.
+    FrameTimes idle;
+    for (int k = 0; k < 60; ++k) idle.ms.push_back(timedFrame(app));
+    std::printf("[ measured ] no export: %zu frames, median %.1f ms, max %.1f ms\n", idle.ms.size(),
+                idle.median(), idle.max());
+
+    // Once cancelled after its first progress: nothing under the name, no temporary file.
+    ASSERT_TRUE(app.startExport());
+    EXPECT_FALSE(app.startExport()) << "a second export is refused while one runs";
+    FrameTimes cancelled;
+    bool cancelAsked = false;
+    for (int k = 0; k < 2000 && app.exportJob().busy(); ++k) {
+      cancelled.ms.push_back(timedFrame(app));
+      if (!cancelAsked && app.exportJob().fraction() > 0.0) {
+        app.model().requests.record.cancelExport = true;  // the dialog's Cancel
+        cancelAsked = true;
+      }
+    }
+    ASSERT_FALSE(app.exportJob().busy());
+    ASSERT_TRUE(app.lastExport().has_value());
+    EXPECT_EQ(app.lastExport()->kind, ExportJob::Outcome::Kind::Cancelled) << app.lastExport()->error;
+    EXPECT_FALSE(fs::exists(glb));
+    EXPECT_TRUE(filesIn(folder).empty()) << "left behind: " << filesIn(folder).front();
+    EXPECT_TRUE(hasToast(app.model(), "Export cancelled; nothing was written"));
+
+    // Then to the end.
+    ASSERT_TRUE(app.startExport());
+    FrameTimes written;
+    for (int k = 0; k < 20000 && app.exportJob().busy(); ++k) written.ms.push_back(timedFrame(app));
+    ASSERT_FALSE(app.exportJob().busy());
+    ASSERT_TRUE(app.lastExport().has_value());
+    const ExportJob::Outcome& outcome = *app.lastExport();
+    ASSERT_EQ(outcome.kind, ExportJob::Outcome::Kind::Written) << outcome.error;
+    ASSERT_TRUE(fs::exists(glb));
+    EXPECT_GT(fs::file_size(glb), 0u);
+    EXPECT_GE(outcome.result.keys, 2u);
+    EXPECT_EQ(outcome.result.frames, take->frameCount());
+    EXPECT_TRUE(hasToast(app.model(), "wrote " + glb));
+    EXPECT_EQ(filesIn(folder).size(), 1u);
+
+    // No frame over twice the median of its export; where the drawing alone already spreads
+    // wider (the idle frames' worst), that is the bound: an export must not add stalls of its own.
+    for (const auto& [name, times] : {std::pair{"cancelled export", &cancelled}, std::pair{"export", &written}}) {
+      std::printf("[ measured ] %s: %zu frames, median %.1f ms, max %.1f ms\n", name,
+                  times->ms.size(), times->median(), times->max());
+      std::string all;
+      for (const double ms : times->ms) all += std::to_string(static_cast<int>(ms)) + " ";
+      const double bound = std::max(2.0 * times->median(), idle.max());
+      EXPECT_LE(times->max(), bound) << name << ": a frame waited on the worker: " << all;
+    }
+    EXPECT_GE(written.ms.size(), 3u) << "the export ran over several frames";
+
+    // The window with the timeline at frame 10, the dialog and the toast.
+    const char* images = std::getenv("SCULPT_SESSION_IMAGES");
+    const fs::path shot = (images ? fs::path(images) : scratch.path()) / "record-timeline.png";
+    app.headlessFrame();
+    app.headlessFrame(shot.string());
+    std::printf("[ image ] %s\n", shot.c_str());
+    EXPECT_TRUE(fs::exists(shot));
+
+    // Live again: the simulation resumes.
+    app.model().requests.record.goLive = true;
+    app.headlessFrame();
+    app.headlessFrame();
+    EXPECT_TRUE(app.recording().isLive());
+    EXPECT_TRUE(app.model().status.playing);
+  }
+  glfwDestroyWindow(window);
+  glfwTerminate();
+}
+
+}  // namespace
+}  // namespace sculpt::app
