@@ -15,6 +15,7 @@ int runDeformCommand(const std::vector<std::string>& args);
 int runStudyCommand(const std::vector<std::string>& args);
 int runDevicesCommand(const std::vector<std::string>& args);
 int runHapticsCommand(const std::vector<std::string>& args);
+int runRecordCommand(const std::vector<std::string>& args);
 
 /// One-paragraph usage of each subcommand (shown by `--help` and in the main usage).
 extern const char* const kInfoUsage;
@@ -26,5 +27,6 @@ extern const char* const kDeformUsage;
 extern const char* const kStudyUsage;
 extern const char* const kDevicesUsage;
 extern const char* const kHapticsUsage;
+extern const char* const kRecordUsage;
 
 }  // namespace sculpt::cli

@@ -24,6 +24,7 @@ void printUsage(std::ostream& out) {
       << sculpt::cli::kStudyUsage << '\n'
       << sculpt::cli::kDevicesUsage << '\n'
       << sculpt::cli::kHapticsUsage << '\n'
+      << sculpt::cli::kRecordUsage << '\n'
       << "Run 'sculpt-cli <command> --help' for one command. Exit code 0 on success, 1 when a\n"
          "solve did not converge or a step failed (static, simulate, bench), 2 on bad input or\n"
          "usage (with one line on stderr naming the file and the problem).\n";
@@ -50,6 +51,7 @@ int dispatch(const std::vector<std::string>& args) {
   if (command == "study") return runStudyCommand(rest);
   if (command == "devices") return runDevicesCommand(rest);
   if (command == "haptics") return runHapticsCommand(rest);
+  if (command == "record") return runRecordCommand(rest);
   return printError("unknown command '" + command + "' (run 'sculpt-cli --help')");
 }
 

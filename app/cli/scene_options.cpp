@@ -15,7 +15,7 @@ CliScene cliSceneFor(const CliArgs& args, const std::string& file, const char* c
       throw UsageError(std::string("--") + option +
                        " is for control meshes; a scene brings its own (save them in its project)");
   CliScene scene;
-  scene.source = sceneSourceFor(file);
+  scene.source = file == kDefaultSceneName ? SceneSource{} : sceneSourceFor(file);
   if (isProjectPath(file)) {
     ProjectScene project = projectScene(loadProject(file), file,
                                         std::filesystem::path(file).filename().string(), scene.settings);
@@ -24,7 +24,8 @@ CliScene cliSceneFor(const CliArgs& args, const std::string& file, const char* c
     scene.settings = project.settings;
   }
   SceneSettings& settings = scene.settings;
-  if (args.has("levels")) settings.level = args.intValue("levels", 1, 1, 3);
+  if (args.has("levels") || args.has("level"))  // record spells it --level, as the window does
+    settings.level = args.intValue(args.has("levels") ? "levels" : "level", 1, 1, 3);
   if (args.has("cage")) settings.cageCellsAcross = args.intValue("cage", 6, 1, 64);
   if (args.has("integrator") || args.has("dt")) {
     const SimulationSettings given = parseIntegratorAndStep(args, false);

@@ -13,6 +13,9 @@
 
 namespace sculpt::cli {
 
+/// The SCENE that names the window's default scene (the refined bunny in its cage).
+inline constexpr const char* kDefaultSceneName = "default";
+
 struct CliScene {
   SceneSource source;
   SceneSettings settings;
