@@ -10,32 +10,10 @@
 #include "io/file_error.h"
 #include "io/number_text.h"
 
+#include "anim/written_files.h"
+
 namespace sculpt {
 namespace {
-
-// The files a sequence export wrote; removed again unless the export completes.
-class WrittenFiles {
- public:
-  WrittenFiles() = default;
-  WrittenFiles(const WrittenFiles&) = delete;
-  WrittenFiles& operator=(const WrittenFiles&) = delete;
-  ~WrittenFiles() {
-    if (kept_) return;
-    for (const std::filesystem::path& path : files_) {
-      std::error_code ignored;
-      std::filesystem::remove(path, ignored);
-    }
-  }
-  void add(const std::filesystem::path& path) { files_.push_back(path); }
-  std::vector<std::filesystem::path> keep() {
-    kept_ = true;
-    return files_;
-  }
-
- private:
-  std::vector<std::filesystem::path> files_;
-  bool kept_ = false;
-};
 
 // 9 significant digits (like "%.9g"): every float reads back bit for bit.
 void appendFloat(std::string& out, float value) {

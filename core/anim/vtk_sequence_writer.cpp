@@ -15,35 +15,13 @@
 #include "io/number_text.h"
 #include "io/vtk_binary.h"
 
+#include "anim/written_files.h"
+
 namespace sculpt {
 namespace {
 
 constexpr uint32_t kVtkTetra = 10;
 constexpr uint32_t kVtkHexahedron = 12;
-
-// The files a sequence export wrote; removed again unless the export completes.
-class WrittenFiles {
- public:
-  WrittenFiles() = default;
-  WrittenFiles(const WrittenFiles&) = delete;
-  WrittenFiles& operator=(const WrittenFiles&) = delete;
-  ~WrittenFiles() {
-    if (kept_) return;
-    for (const std::filesystem::path& path : files_) {
-      std::error_code ignored;
-      std::filesystem::remove(path, ignored);
-    }
-  }
-  void add(const std::filesystem::path& path) { files_.push_back(path); }
-  std::vector<std::filesystem::path> keep() {
-    kept_ = true;
-    return files_;
-  }
-
- private:
-  std::vector<std::filesystem::path> files_;
-  bool kept_ = false;
-};
 
 enum class GridFormat { kLegacyBinary, kXml };
 

@@ -156,15 +156,23 @@ TEST(RecordWindow, RecordsScrubsAndExportsWithoutStallingTheWindow) {
     EXPECT_TRUE(hasToast(app.model(), "wrote " + glb));
     EXPECT_EQ(filesIn(folder).size(), 1u);
 
-    // No frame over twice the median of its export; where the drawing alone already spreads
-    // wider (the idle frames' worst), that is the bound: an export must not add stalls of its own.
+    // No frame over twice the median of its export. Other processes on a shared machine (ctest
+    // runs tests side by side) add spikes of their own, so 1% of the frames may pass 2x; none may
+    // pass 4x, which would mean the frame waited on the worker.
     for (const auto& [name, times] : {std::pair{"cancelled export", &cancelled}, std::pair{"export", &written}}) {
-      std::printf("[ measured ] %s: %zu frames, median %.1f ms, max %.1f ms\n", name,
-                  times->ms.size(), times->median(), times->max());
+      const double median = times->median();
+      size_t over = 0;
       std::string all;
-      for (const double ms : times->ms) all += std::to_string(static_cast<int>(ms)) + " ";
-      const double bound = std::max(2.0 * times->median(), idle.max());
-      EXPECT_LE(times->max(), bound) << name << ": a frame waited on the worker: " << all;
+      for (const double ms : times->ms) {
+        over += ms > 2.0 * median;
+        all += std::to_string(static_cast<int>(ms)) + " ";
+      }
+      std::printf("[ measured ] %s: %zu frames, median %.1f ms, max %.1f ms (%.2fx), %zu over 2x "
+                  "(idle: median %.1f ms, max %.1f ms)\n",
+                  name, times->ms.size(), median, times->max(), times->max() / median, over,
+                  idle.median(), idle.max());
+      EXPECT_LE(over, times->ms.size() / 100) << name << ": " << all;
+      EXPECT_LE(times->max(), 4.0 * median) << name << ": a frame waited on the worker: " << all;
     }
     EXPECT_GE(written.ms.size(), 3u) << "the export ran over several frames";
 
