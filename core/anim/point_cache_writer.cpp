@@ -11,6 +11,7 @@
 #include <string_view>
 #include <system_error>
 
+#include "anim/stream_file.h"
 #include "io/file_error.h"
 
 namespace sculpt {
@@ -18,65 +19,6 @@ namespace {
 
 enum class CacheFormat { kPc2, kMdd };
 
-[[noreturn]] void fail(const std::filesystem::path& path, std::string_view what, int error) {
-  throw FileError(path.string() + ": " + std::string(what) + " (" +
-                  std::generic_category().message(error) + ")");
-}
-
-// A file written in pieces under a temporary name beside the target; commit() renames it over
-// the target, and anything short of that removes it.
-class PartialFile {
- public:
-  explicit PartialFile(std::filesystem::path target) : target_(std::move(target)) {
-    static std::atomic<unsigned> counter{0};
-    for (int attempt = 0; attempt < 16 && fd_ < 0; ++attempt) {
-      std::string name(".");
-      name.append(target_.filename().string()).append(".partial.");
-      name.append(std::to_string(::getpid())).append(".").append(std::to_string(counter++));
-      temp_ = target_;
-      temp_.replace_filename(name);
-      fd_ = ::open(temp_.c_str(), O_WRONLY | O_CREAT | O_EXCL | O_CLOEXEC, 0666);
-      if (fd_ < 0 && errno != EEXIST) fail(target_, "cannot create a file for writing", errno);
-    }
-    if (fd_ < 0) fail(target_, "cannot create a file for writing", errno);
-  }
-  PartialFile(const PartialFile&) = delete;
-  PartialFile& operator=(const PartialFile&) = delete;
-  ~PartialFile() {
-    if (fd_ >= 0) ::close(fd_);
-    if (!committed_) ::unlink(temp_.c_str());
-  }
-
-  void write(std::string_view bytes) {
-    while (!bytes.empty()) {
-      const ssize_t n = ::write(fd_, bytes.data(), bytes.size());
-      if (n < 0) {
-        if (errno == EINTR) continue;
-        fail(target_, "cannot write", errno);
-      }
-      bytes.remove_prefix(static_cast<size_t>(n));
-      size_ += static_cast<uint64_t>(n);
-    }
-  }
-
-  void commit() {
-    if (::fsync(fd_) != 0) fail(target_, "cannot flush to disk", errno);
-    const int result = ::close(fd_);
-    fd_ = -1;
-    if (result != 0) fail(target_, "cannot write", errno);
-    if (::rename(temp_.c_str(), target_.c_str()) != 0) fail(target_, "cannot replace", errno);
-    committed_ = true;
-  }
-
-  uint64_t size() const { return size_; }
-
- private:
-  std::filesystem::path target_;
-  std::filesystem::path temp_;
-  int fd_ = -1;
-  bool committed_ = false;
-  uint64_t size_ = 0;
-};
 
 void appendLittleEndian(std::string& out, uint32_t bits) {
   for (int i = 0; i < 4; ++i) out += static_cast<char>((bits >> (8 * i)) & 0xffu);
@@ -120,7 +62,7 @@ ExportResult writePointCache(const AnimatedSurface& animation, const std::filesy
   }
   const uint32_t vertices = vertexCount(animation, path);
 
-  PartialFile file(path);
+  StreamFile file(path);
   std::string bytes;
   if (format == CacheFormat::kPc2) {
     bytes.append("POINTCACHE2", 12);  // with its terminating zero
@@ -136,7 +78,7 @@ ExportResult writePointCache(const AnimatedSurface& animation, const std::filesy
       appendFloat(bytes, static_cast<float>(animation.frameTime(f)), format);
     }
   }
-  file.write(bytes);
+  file.write(bytes.data(), bytes.size());
 
   ExportResult result;
   SurfaceFrameData frame;
@@ -149,7 +91,7 @@ ExportResult writePointCache(const AnimatedSurface& animation, const std::filesy
     }
     bytes.clear();
     for (const float value : frame.positions) appendFloat(bytes, value, format);
-    file.write(bytes);
+    file.write(bytes.data(), bytes.size());
     if (progress && !progress->report(double(f + 1) / frames, "point cache")) {
       result.cancelled = true;
       return result;  // the partial file goes with `file`
@@ -157,7 +99,7 @@ ExportResult writePointCache(const AnimatedSurface& animation, const std::filesy
   }
   file.commit();
   result.files.push_back(path);
-  result.bytes = file.size();
+  result.bytes = file.written();
   result.frames = frames;
   return result;
 }

@@ -13,6 +13,7 @@
 
 #include "anim/fake_animated_surface.h"
 #include "anim/glb_animation_writer.h"
+#include "support/gltf_validator.h"
 #include "anim/glb_reader.h"
 #include "anim/morph_keys.h"
 #include "io/atomic_file.h"
@@ -474,22 +475,9 @@ TEST_F(GlbAnimationTest, UnwritablePathThrowsFileError) {
                FileError);
 }
 
-// The Khronos validator's wrapper, installed by scripts/install-gltf-validator.sh.
-std::filesystem::path gltfValidatorScript() {
-  std::filesystem::path dir;
-  if (const char* chosen = std::getenv("SCULPT_GLTF_VALIDATOR_DIR")) {
-    dir = chosen;
-  } else if (const char* cache = std::getenv("XDG_CACHE_HOME")) {
-    dir = std::filesystem::path(cache) / "sculpt" / "gltf-validator";
-  } else if (const char* home = std::getenv("HOME")) {
-    dir = std::filesystem::path(home) / ".cache" / "sculpt" / "gltf-validator";
-  }
-  const auto script = dir / "validate.js";
-  return !dir.empty() && std::filesystem::exists(script) ? script : std::filesystem::path();
-}
 
 TEST_F(GlbAnimationTest, PassesTheKhronosValidator) {
-  const auto script = gltfValidatorScript();
+  const auto script = test::gltfValidatorScript();
   ASSERT_FALSE(script.empty())
       << "the glTF validator is not installed: run scripts/install-gltf-validator.sh";
   ASSERT_EQ(std::system("node --version > /dev/null 2>&1"), 0)

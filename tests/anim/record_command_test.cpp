@@ -18,6 +18,7 @@
 #include "anim/record_scene.h"
 #include "io/atomic_file.h"
 #include "support/cli_fixture.h"
+#include "support/gltf_validator.h"
 
 namespace sculpt {
 namespace {
@@ -184,17 +185,10 @@ TEST_F(RecordCommand, RecordingTwiceGivesByteIdenticalFilesInEveryFormat) {
   EXPECT_EQ(files, 3u + 3 * kFrames + 3) << "glb, pc2, mdd, the three sequences, two .pvd and a .vtk.series";
 }
 
-/// validate.js of scripts/install-gltf-validator.sh.
-fs::path validatorScript() {
-  if (const char* dir = std::getenv("SCULPT_GLTF_VALIDATOR_DIR")) return fs::path(dir) / "validate.js";
-  const char* cache = std::getenv("XDG_CACHE_HOME");
-  const fs::path base = cache ? fs::path(cache) : fs::path(std::getenv("HOME") ? std::getenv("HOME") : "/") / ".cache";
-  return base / "sculpt" / "gltf-validator" / "validate.js";
-}
 
 TEST_F(RecordCommand, GlbOfTheDefaultSceneAndOfAControlMeshScenePassTheKhronosValidator) {
-  const fs::path script = validatorScript();
-  ASSERT_TRUE(fs::exists(script)) << "the glTF validator is missing: run scripts/install-gltf-validator.sh";
+  const fs::path script = test::gltfValidatorScript();
+  ASSERT_FALSE(script.empty()) << "the glTF validator is missing: run scripts/install-gltf-validator.sh";
   ASSERT_EQ(run(recordBlock("--out " + test::quote(path("block.glb")))).exitCode, 0);
   const test::CliResult bunny =
       run("record default --script " + test::quote(SCULPT_SOURCE_DIR "/assets/scripts/bunny_pull.json") +

@@ -25,6 +25,7 @@
 #include "io/gltf_surface.h"
 #include "io/obj_surface.h"
 #include "io/surface_file.h"
+#include "support/gltf_validator.h"
 
 namespace sculpt {
 namespace {
@@ -531,22 +532,9 @@ TEST_F(SurfaceIoTest, GltfOutputOfGltfInputAsObj) {
   expectQuadInSceneSpace(readSurfaceFile(file("quad.obj")).surface());
 }
 
-/// validate.js installed by scripts/install-gltf-validator.sh, or an empty path.
-std::filesystem::path gltfValidatorScript() {
-  std::filesystem::path dir;
-  if (const char* chosen = std::getenv("SCULPT_GLTF_VALIDATOR_DIR")) {
-    dir = chosen;
-  } else if (const char* cache = std::getenv("XDG_CACHE_HOME")) {
-    dir = std::filesystem::path(cache) / "sculpt" / "gltf-validator";
-  } else if (const char* home = std::getenv("HOME")) {
-    dir = std::filesystem::path(home) / ".cache" / "sculpt" / "gltf-validator";
-  }
-  const auto script = dir / "validate.js";
-  return !dir.empty() && std::filesystem::exists(script) ? script : std::filesystem::path();
-}
 
 TEST_F(SurfaceIoTest, WrittenFilesPassTheKhronosValidator) {
-  const auto script = gltfValidatorScript();
+  const auto script = test::gltfValidatorScript();
   ASSERT_FALSE(script.empty()) << "the glTF validator is missing: run scripts/install-gltf-validator.sh";
   ASSERT_EQ(std::system("node --version > /dev/null 2>&1"), 0)
       << "node is missing: scripts/install-deps.sh installs it";
