@@ -9,21 +9,16 @@
 #include "anim/obj_sequence_writer.h"
 #include "anim/point_cache_writer.h"
 #include "anim/vtk_sequence_writer.h"
+#include "util/file_extension.h"
 
 namespace sculpt {
 namespace {
 
-std::string lowerExtensionOf(const std::filesystem::path& path) {
-  std::string ext = path.extension().string();
-  std::transform(ext.begin(), ext.end(), ext.begin(),
-                 [](unsigned char c) { return static_cast<char>(std::tolower(c)); });
-  return ext;
-}
 
 }  // namespace
 
 ExportTarget exportTargetFor(const std::filesystem::path& path) {
-  const std::string ext = lowerExtensionOf(path);
+  const std::string ext = lowerExtension(path);
   ExportTarget target;
   if (ext == ".glb") target.format = ExportFormat::Glb;
   else if (ext == ".pc2") target.format = ExportFormat::Pc2;

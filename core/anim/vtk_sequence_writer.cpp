@@ -16,6 +16,7 @@
 #include "io/vtk_binary.h"
 
 #include "anim/written_files.h"
+#include "util/file_extension.h"
 
 namespace sculpt {
 namespace {
@@ -259,8 +260,7 @@ std::string fileSeries(const std::vector<ListedFrame>& frames) {
 }
 
 GridFormat formatOf(const std::filesystem::path& pattern) {
-  std::string extension = pattern.extension().string();
-  for (char& c : extension) c = static_cast<char>(std::tolower(static_cast<unsigned char>(c)));
+  const std::string extension = lowerExtension(pattern);
   if (extension == ".vtk") return GridFormat::kLegacyBinary;
   if (extension == ".vtu") return GridFormat::kXml;
   throw std::invalid_argument("'" + pattern.string() +

@@ -5,6 +5,7 @@
 
 #include "io/file_error.h"
 #include "io/obj_surface.h"
+#include "util/file_extension.h"
 
 namespace sculpt {
 namespace {
@@ -12,8 +13,7 @@ namespace {
 enum class SurfaceFormat { kObj, kGltf };
 
 SurfaceFormat formatOf(const std::filesystem::path& path) {
-  std::string extension = path.extension().string();
-  for (char& c : extension) c = static_cast<char>(std::tolower(static_cast<unsigned char>(c)));
+  const std::string extension = lowerExtension(path);
   if (extension == ".obj") return SurfaceFormat::kObj;
   if (extension == ".gltf" || extension == ".glb") return SurfaceFormat::kGltf;
   throw FileError(path.string() + ": unsupported surface file extension '" +

@@ -9,16 +9,10 @@
 #include <stdexcept>
 
 #include "project/project_file.h"
+#include "util/file_extension.h"
 
 namespace sculpt {
 namespace {
-
-std::string lowerExtension(const std::filesystem::path& path) {
-  std::string extension = path.extension().string();
-  std::transform(extension.begin(), extension.end(), extension.begin(),
-                 [](unsigned char c) { return static_cast<char>(std::tolower(c)); });
-  return extension;
-}
 
 Integrator integratorFromName(const std::string& name) {
   return name == "paper" ? Integrator::Paper : Integrator::Implicit;
