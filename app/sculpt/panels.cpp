@@ -37,6 +37,9 @@ void menuBar(AppModel& m) {
     }
     if (ImGui::MenuItem("Export recording...", nullptr, false, m.record.hasTake && !m.record.recording))
       m.exportDialog.show = true;
+    if (ImGui::MenuItem("Save take script", nullptr, false,
+                        m.record.hasTake && !m.record.recording && m.record.strokes > 0))
+      r.record.saveScript = true;
     if (ImGui::MenuItem("Screenshot", "F12")) r.screenshot = true;
     if (ImGui::BeginMenu("Screenshot options")) {
       ImGui::RadioButton("1x", &m.screenshot.supersample, 1);

@@ -18,6 +18,7 @@ struct RecordRequests {
   std::optional<uint32_t> playhead;  ///< scrub to this frame (leaves Live)
   bool togglePlayback = false, goLive = false;
   bool startExport = false, cancelExport = false;
+  bool saveScript = false;  ///< the take's strokes as a session script beside the export path
 };
 
 struct RecordStatus {
@@ -31,6 +32,7 @@ struct RecordStatus {
   bool live = true;        ///< the view shows the running simulation
   uint32_t playhead = 0;   ///< the frame shown when not live
   bool playingBack = false;
+  size_t strokes = 0;  ///< script events captured in the take
 };
 
 struct ExportDialog {

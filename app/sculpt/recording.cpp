@@ -17,6 +17,7 @@ void Recording::setFps(double fps) {
 void Recording::start(SimulationLoop& loop) {
   goLive();
   recorder_ = std::make_unique<Recorder>(fps_);
+  strokes_.clear();
   recorder_->attach(loop);
   recorder_->start();
 }

@@ -10,6 +10,7 @@
 #include <optional>
 
 #include "anim/recorder.h"
+#include "anim/stroke_capture.h"
 #include "anim/take.h"
 #include "scene/simulation_loop.h"
 
@@ -57,7 +58,12 @@ class Recording {
   /// whether the playhead changed.
   bool advance(Clock::time_point now);
 
+ /// The mouse strokes of the take being recorded (or of the last one), as script events.
+  StrokeCapture& strokes() { return strokes_; }
+  const StrokeCapture& strokes() const { return strokes_; }
+
  private:
+  StrokeCapture strokes_;
   double fps_ = 30.0;
   std::unique_ptr<Recorder> recorder_;
   std::shared_ptr<const Take> take_;

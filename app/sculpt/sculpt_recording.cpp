@@ -6,6 +6,7 @@
 #include <filesystem>
 #include <string>
 
+#include "tools/session_script_writer.h"
 #include "anim/take_playback.h"
 #include "anim/take_surface.h"
 #include "sculpt/app_clock.h"
@@ -76,6 +77,17 @@ void SculptApp::carryOutRecordRequests(const RecordRequests& r) {
   if (r.goLive) goLive();
   if (r.startExport) startExport();
   if (r.cancelExport) export_->cancel();
+  if (r.saveScript) {
+    // Beside the export path: take.glb -> take_script.json, for sculpt-cli record --script.
+    std::filesystem::path path(model_.exportDialog.path.data());
+    path.replace_filename(path.stem().string() + "_script.json");
+    try {
+      saveSessionScript(recording_->strokes().script(), path, "strokes of a take made in the window");
+      model_.toast("wrote " + path.string());
+    } catch (const std::exception& error) {
+      model_.toast(error.what(), true, 8.0);
+    }
+  }
   showPlayhead();  // the next frame draws what was asked for
   publishRecordStatus();
 }
@@ -119,6 +131,7 @@ void SculptApp::publishRecordStatus() {
   s.live = recording_->isLive();
   s.playhead = recording_->playhead();
   s.playingBack = recording_->playingBack();
+  s.strokes = recording_->strokes().script().events.size();
   if (s.recording || s.playingBack) sceneChanged_ = true;  // keep drawing while the figures move
 }
 

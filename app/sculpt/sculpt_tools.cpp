@@ -148,11 +148,21 @@ void SculptApp::pullStroke(const PointerResult& stroke, float x, float y, int wi
       stroke_ = controller_->loop().beginStroke(std::make_unique<PullStroke>(settings),
                                                 toolInput(hit->world, hit->rest));
       grabDistance_ = glm::dot(hit->world - origin, direction);
+      if (recording_->recording())
+        recording_->strokes().beginGrab(recording_->seconds(), hit->rest,
+                                        Eigen::Vector3d(hit->world.x, hit->world.y, hit->world.z),
+                                        settings.keep);
     }
   } else if (stroke.strokeActive && stroke_ != 0) {
-    controller_->loop().updateStroke(stroke_, toolInput(origin + grabDistance_ * direction, std::nullopt));
+    const glm::vec3 target = origin + grabDistance_ * direction;
+    controller_->loop().updateStroke(stroke_, toolInput(target, std::nullopt));
+    if (recording_->recording())
+      recording_->strokes().moveGrab(recording_->seconds(), Eigen::Vector3d(target.x, target.y, target.z));
   }
-  if (stroke.strokeEnded) endToolStroke();
+  if (stroke.strokeEnded) {
+    if (stroke_ != 0 && recording_->recording()) recording_->strokes().endGrab(recording_->seconds());
+    endToolStroke();
+  }
 }
 
 void SculptApp::stylusStroke(const PointerResult& stroke, float x, float y, int width, int height) {
