@@ -157,7 +157,7 @@ TEST(RecordWindow, RecordsScrubsAndExportsWithoutStallingTheWindow) {
     EXPECT_EQ(filesIn(folder).size(), 1u);
 
     // No frame over twice the median of its export. Other processes on a shared machine (ctest
-    // runs tests side by side) add spikes of their own, so 1% of the frames may pass 2x; none may
+    // runs tests side by side) add spikes of their own, so 1% of the frames (at least one) may pass 2x; none may
     // pass 4x, which would mean the frame waited on the worker.
     for (const auto& [name, times] : {std::pair{"cancelled export", &cancelled}, std::pair{"export", &written}}) {
       const double median = times->median();
@@ -171,7 +171,7 @@ TEST(RecordWindow, RecordsScrubsAndExportsWithoutStallingTheWindow) {
                   "(idle: median %.1f ms, max %.1f ms)\n",
                   name, times->ms.size(), median, times->max(), times->max() / median, over,
                   idle.median(), idle.max());
-      EXPECT_LE(over, times->ms.size() / 100) << name << ": " << all;
+      EXPECT_LE(over, std::max<size_t>(1, times->ms.size() / 100)) << name << ": " << all;
       EXPECT_LE(times->max(), 4.0 * median) << name << ": a frame waited on the worker: " << all;
     }
     EXPECT_GE(written.ms.size(), 3u) << "the export ran over several frames";
