@@ -56,7 +56,9 @@ MorphKeys chooseMorphKeys(const AnimatedSurface& take, uint32_t segment,
   };
 
   // window[i] is frame a + i, where a is the last key.
+  // Keys are chosen (and their position bounds taken) from positions alone.
   std::deque<SurfaceFrameData> window(1);
+  window.front().withNormals = false;
   take.evaluateSurface(range.first, window.front());
   addKey(range.first, window.front());
   if (onFrame && !onFrame(range.first)) return keys;
@@ -69,6 +71,7 @@ MorphKeys chooseMorphKeys(const AnimatedSurface& take, uint32_t segment,
       next = std::move(spare.back());
       spare.pop_back();
     }
+    next.withNormals = false;
     take.evaluateSurface(b, next);
     window.push_back(std::move(next));
     const double error =

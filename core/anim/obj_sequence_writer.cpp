@@ -94,9 +94,10 @@ ExportResult writeObjSequence(const AnimatedSurface& animation,
   SurfaceFrameData frame;
   for (uint32_t f = 0; f < frames; ++f) {
     const std::filesystem::path path = framePath(names, f + 1);
+    const SurfaceMesh& rest = animation.restSurface(animation.segmentOf(f));
+    frame.withNormals = rest.normals.rows() > 0;  // only the source's own normals are written
     animation.evaluateSurface(f, frame);
-    const std::string text =
-        frameText(animation, f, animation.restSurface(animation.segmentOf(f)), frame, path);
+    const std::string text = frameText(animation, f, rest, frame, path);
     writeFileAtomically(path, text);
     written.add(path);
     result.bytes += text.size();

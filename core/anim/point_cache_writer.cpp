@@ -82,6 +82,7 @@ ExportResult writePointCache(const AnimatedSurface& animation, const std::filesy
 
   ExportResult result;
   SurfaceFrameData frame;
+  frame.withNormals = false;  // a point cache holds positions only
   for (uint32_t f = 0; f < frames; ++f) {
     animation.evaluateSurface(f, frame);
     if (frame.positions.size() != 3 * size_t{vertices}) {

@@ -30,6 +30,8 @@ TakeSurface::TakeSurface(std::shared_ptr<const Take> take, FrameRange range,
     for (Eigen::Index v = 0; v < g.restNormals.rows(); ++v)
       for (int d = 0; d < 3; ++d) segment.restNormals[3 * v + d] = static_cast<float>(g.restNormals(v, d));
     if (g.surface->normals.rows() > 0) segment.normalAnchors = normalAnchors(*g.surface);
+    segment.vertexAnchors.resize(g.restPositions.rows());
+    for (uint32_t v = 0; v < segment.vertexAnchors.size(); ++v) segment.vertexAnchors[v] = v;
     segments_.push_back(std::move(segment));
   }
 }
@@ -93,9 +95,7 @@ void TakeSurface::evaluateSurface(uint32_t frame, SurfaceFrameData& out) const {
     return;
   }
   const SceneGeometry& g = segment.surface->geometry();
-  std::vector<uint32_t> identity(d.numPoints());
-  for (uint32_t p = 0; p < d.numPoints(); ++p) identity[p] = p;
-  toFloats(d.deformNormals(g.restNormals, identity), out.normals);
+  toFloats(d.deformNormals(g.restNormals, segment.vertexAnchors), out.normals);
   if (segment.normalAnchors.empty())
     out.sourceNormals.clear();
   else

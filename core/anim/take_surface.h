@@ -43,6 +43,7 @@ class TakeSurface : public AnimatedSurface {
     FrameRange frames;  // in this view's frame numbers
     std::vector<float> restNormals;
     std::vector<uint32_t> normalAnchors;  // of the source surface's own normals
+    std::vector<uint32_t> vertexAnchors;  // 0, 1, ...: one rest normal per vertex
     mutable std::unique_ptr<EmbeddedDeformer> deformer;  // made on first use
   };
   const Segment& segmentFor(uint32_t frame) const;

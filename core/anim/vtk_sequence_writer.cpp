@@ -16,6 +16,7 @@
 #include "io/vtk_binary.h"
 
 #include "anim/written_files.h"
+#include "io/vtk_volume_mesh.h"
 #include "util/file_extension.h"
 
 namespace sculpt {
@@ -95,32 +96,13 @@ void appendBinaryScalars(std::string& out, std::string_view name,
   out += '\n';
 }
 
-// Legacy VTK 4.2, binary: big-endian numbers, CELLS in the classic count-then-ids layout.
+// Legacy VTK 4.2, binary: the grid as io writes volume meshes, then the point and cell data.
 std::string legacyGrid(const VolumeMesh& rest, const SolidFrameData& solid, const Frame& frame) {
   const uint32_t nodes = rest.numNodes();
   const uint32_t cells = rest.numCells();
-  std::string out;
-  out.reserve(64 * size_t{nodes} + 48 * size_t{cells} + 512);
-  out += "# vtk DataFile Version 4.2\n";
-  out += frameTitle(frame);
-  out += "\nBINARY\nDATASET UNSTRUCTURED_GRID\nPOINTS ";
-  appendNumber(out, nodes);
-  out += " double\n";
-  appendBinaryPoints(out, solid.nodes);
-  out += "CELLS ";
-  appendNumber(out, cells);
-  out += ' ';
-  appendNumber(out, static_cast<uint32_t>(rest.cells.values.size() + cells));
-  out += '\n';
-  for (uint32_t c = 0; c < cells; ++c) {
-    appendBigEndian(out, rest.cells.rowSize(c), 4);
-    for (const uint32_t node : rest.cells.row(c)) appendBigEndian(out, node, 4);
-  }
-  out += "\nCELL_TYPES ";
-  appendNumber(out, cells);
-  out += '\n';
-  for (uint32_t c = 0; c < cells; ++c) appendBigEndian(out, cellType(rest, c), 4);
-  out += "\nPOINT_DATA ";
+  std::string out = volumeMeshToVtk(rest, true, solid.nodes, frameTitle(frame));
+  out.reserve(out.size() + 24 * size_t{nodes} + 12 * size_t{cells} + 256);
+  out += "POINT_DATA ";
   appendNumber(out, nodes);
   out += "\nVECTORS displacement double\n";
   appendBinaryPoints(out, solid.displacement);

@@ -478,6 +478,14 @@ VolumeMesh readVtkVolumeMesh(const std::filesystem::path& path, CellShapeCheck s
 }
 
 std::string volumeMeshToVtk(const VolumeMesh& mesh, bool binary) {
+  return volumeMeshToVtk(mesh, binary, mesh.positions, "sculpt volume mesh");
+}
+
+std::string volumeMeshToVtk(const VolumeMesh& mesh, bool binary, const Points& positions,
+                            std::string_view title) {
+  if (positions.rows() != mesh.positions.rows())
+    throw std::invalid_argument("volumeMeshToVtk: " + std::to_string(positions.rows()) +
+                                " positions for " + std::to_string(mesh.numNodes()) + " nodes");
   const uint32_t numNodes = mesh.numNodes();
   const uint32_t numCells = mesh.numCells();
   uint64_t cellsSize = 0;
@@ -493,14 +501,16 @@ std::string volumeMeshToVtk(const VolumeMesh& mesh, bool binary) {
     throw std::invalid_argument("volumeMeshToVtk: too many nodes for binary VTK");
   }
 
-  std::string out = "# vtk DataFile Version 4.2\nsculpt volume mesh\n";
+  std::string out = "# vtk DataFile Version 4.2\n";
+  out += title;
+  out += '\n';
   out += binary ? "BINARY\n" : "ASCII\n";
   out += "DATASET UNSTRUCTURED_GRID\nPOINTS ";
   appendNumber(out, numNodes);
   out += " double\n";
   for (uint32_t n = 0; n < numNodes; ++n) {
     for (Eigen::Index k = 0; k < 3; ++k) {
-      const double x = mesh.positions(n, k);
+      const double x = positions(n, k);
       if (binary) {
         appendBigEndian(out, std::bit_cast<uint64_t>(x), 8);
       } else {

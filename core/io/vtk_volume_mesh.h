@@ -28,6 +28,11 @@ VolumeMesh readVtkVolumeMesh(const std::filesystem::path& path,
 /// Throws std::invalid_argument for a cell that is neither 4 nor 8 nodes, or (binary) a node id
 /// beyond the int32 range of the classic layout.
 std::string volumeMeshToVtk(const VolumeMesh& mesh, bool binary);
+/// The same file with other node positions (#nodes by 3, e.g. a deformed state; else
+/// std::invalid_argument) and `title` as its title line; it ends after CELL_TYPES, so point and
+/// cell data can follow.
+std::string volumeMeshToVtk(const VolumeMesh& mesh, bool binary, const Points& positions,
+                            std::string_view title);
 
 /// Writes volumeMeshToVtk(mesh, binary) atomically. Throws FileError.
 void writeVtkVolumeMesh(const std::filesystem::path& path, const VolumeMesh& mesh, bool binary);
