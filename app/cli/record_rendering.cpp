@@ -10,21 +10,13 @@
 
 #include "anim/frame_pattern.h"
 #include "cli/scene_options.h"
+#include "util/shell_command.h"
 
 namespace sculpt::cli {
 namespace {
 
 namespace fs = std::filesystem;
 
-std::string quoted(const std::string& text) {
-  std::string out = "'";
-  for (const char c : text) out += c == '\'' ? std::string("'\\''") : std::string(1, c);
-  return out + "'";
-}
-
-bool onPath(const std::string& program) {
-  return std::system(("command -v " + program + " > /dev/null 2>&1").c_str()) == 0;
-}
 
 // The window program beside this executable.
 fs::path windowProgram() {
@@ -76,12 +68,12 @@ ExportResult renderRecording(const std::string& scene, const CliArgs& args, doub
 
   std::string line;
   if (!std::getenv("DISPLAY")) {
-    if (!onPath("xvfb-run"))
+    if (!programOnPath("xvfb-run"))
       throw std::runtime_error(out.string() + ": rendering needs a display: set DISPLAY or install "
                                "xvfb-run (scripts/install-deps.sh installs it)");
     line = "xvfb-run -a -s '-screen 0 1920x1200x24' ";
   }
-  for (const std::string& word : command) line += quoted(word) + ' ';
+  for (const std::string& word : command) line += shellQuote(word) + ' ';
   line += "> /dev/null";  // the window program's summary line; ours comes at the end
   std::cerr << "record: rendering " << out.string() << " with the window program\n";
   const int status = std::system(line.c_str());

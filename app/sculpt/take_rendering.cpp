@@ -19,6 +19,7 @@
 #include "render/png_image.h"
 #include "sculpt/sculpt_app.h"
 #include "sculpt/video_encoder.h"
+#include "util/shell_command.h"
 
 namespace sculpt::app {
 

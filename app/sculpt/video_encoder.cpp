@@ -9,29 +9,9 @@
 #include <utility>
 
 #include "io/file_error.h"
+#include "util/shell_command.h"
 
 namespace sculpt::app {
-namespace {
-
-std::string shellQuoted(const std::string& text) {
-  std::string quoted = "'";
-  for (const char c : text) quoted += c == '\'' ? std::string("'\\''") : std::string(1, c);
-  return quoted + "'";
-}
-
-}  // namespace
-
-bool programOnPath(const std::string& program) {
-  const char* path = std::getenv("PATH");
-  if (!path) return false;
-  std::stringstream folders(path);
-  std::string folder;
-  while (std::getline(folders, folder, ':')) {
-    const std::filesystem::path candidate = std::filesystem::path(folder.empty() ? "." : folder) / program;
-    if (::access(candidate.c_str(), X_OK) == 0 && !std::filesystem::is_directory(candidate)) return true;
-  }
-  return false;
-}
 
 VideoEncoder::VideoEncoder(std::filesystem::path path, int width, int height, double fps)
     : path_(std::move(path)), width_(width), height_(height) {
@@ -43,7 +23,7 @@ VideoEncoder::VideoEncoder(std::filesystem::path path, int width, int height, do
   std::ostringstream command;
   command << "ffmpeg -hide_banner -loglevel error -y -f rawvideo -pix_fmt rgba -s " << width_ << "x"
           << height_ << " -r " << fps
-          << " -i - -c:v libx264 -pix_fmt yuv420p -movflags +faststart " << shellQuoted(temporary_.string());
+          << " -i - -c:v libx264 -pix_fmt yuv420p -movflags +faststart " << shellQuote(temporary_.string());
   // A dead ffmpeg must fail the write, not kill this process.
   std::signal(SIGPIPE, SIG_IGN);
   pipe_ = ::popen(command.str().c_str(), "w");

@@ -11,9 +11,6 @@
 
 namespace sculpt::app {
 
-/// True when `program` is an executable file in a folder of $PATH.
-bool programOnPath(const std::string& program);
-
 class VideoEncoder {
  public:
   /// Starts ffmpeg for `width` x `height` (both even) frames at `fps`. Throws FileError.

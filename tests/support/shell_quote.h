@@ -3,13 +3,10 @@
 
 #include <string>
 
+#include "util/shell_command.h"
+
 namespace sculpt::test {
 
-/// `text` single-quoted for sh.
-inline std::string shellQuote(const std::string& text) {
-  std::string quoted = "'";
-  for (char ch : text) quoted += ch == '\'' ? std::string("'\\''") : std::string(1, ch);
-  return quoted + "'";
-}
+using sculpt::shellQuote;
 
 }  // namespace sculpt::test
