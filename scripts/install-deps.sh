@@ -36,7 +36,14 @@ PACKAGES=(
   xvfb               # xvfb-run: window tests without a display
   xauth              # needed by xvfb-run
   ffmpeg             # sculpt --record-out NAME.mp4 (H.264); ffprobe checks it in the GUI tests
+  blender            # Blender 3.4 imports the recorded .glb in the tests (tests/anim)
+  python3-numpy      # Blender's glTF importer needs numpy
 )
+# The glTF validator (scripts/install-gltf-validator.sh) runs on node and installs with npm; a
+# machine that already has them (e.g. from NodeSource) keeps its own.
+if ! command -v node >/dev/null 2>&1 || ! command -v npm >/dev/null 2>&1; then
+  PACKAGES+=(nodejs npm)
+fi
 
 log() { printf '[install-deps] %s\n' "$*"; }
 
