@@ -24,6 +24,7 @@ void Recording::start(SimulationLoop& loop) {
 
 void Recording::stop() {
   if (!recorder_) return;
+  strokes_.end(recorder_->duration());  // a stroke still held ends with the take
   recorder_->stop();
   recorder_->detach();
   std::shared_ptr<const Take> take = recorder_->take();

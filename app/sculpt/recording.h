@@ -58,9 +58,10 @@ class Recording {
   /// whether the playhead changed.
   bool advance(Clock::time_point now);
 
- /// The mouse strokes of the take being recorded (or of the last one), as script events.
-  StrokeCapture& strokes() { return strokes_; }
+  /// The mouse strokes of the take being recorded (or of the last one), as script events.
   const StrokeCapture& strokes() const { return strokes_; }
+  /// Where the strokes made now go, at take time seconds(): null unless recording.
+  StrokeCapture* capturing() { return recording() ? &strokes_ : nullptr; }
 
  private:
   StrokeCapture strokes_;

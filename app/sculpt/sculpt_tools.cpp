@@ -42,6 +42,8 @@ std::optional<float> rayTriangle(const glm::vec3& origin, const glm::vec3& direc
   return t > 0.0f ? std::optional<float>(t) : std::nullopt;
 }
 
+Eigen::Vector3d toEigen(const glm::vec3& v) { return Eigen::Vector3d(v.x, v.y, v.z); }
+
 glm::vec3 row(const Points& points, uint32_t i) {
   return glm::vec3(points(i, 0), points(i, 1), points(i, 2));
 }
@@ -113,7 +115,7 @@ void SculptApp::toolStroke(const PointerResult& stroke, float x, float y, int wi
 
 ToolInput SculptApp::toolInput(const glm::vec3& world, const std::optional<Eigen::Vector3d>& rest) const {
   ToolInput input;
-  input.position = Eigen::Vector3d(world.x, world.y, world.z);
+  input.position = toEigen(world);
   input.restPoint = rest;
   if (strokeInverted_) input.modifiers |= kToolInvert;
   return input;
@@ -121,6 +123,7 @@ ToolInput SculptApp::toolInput(const glm::vec3& world, const std::optional<Eigen
 
 void SculptApp::endToolStroke() {
   if (stroke_ == 0) return;
+  if (StrokeCapture* capture = recording_->capturing()) capture->end(recording_->seconds());
   controller_->loop().endStroke(stroke_, ToolInput{});
   stroke_ = 0;
 }
@@ -148,21 +151,16 @@ void SculptApp::pullStroke(const PointerResult& stroke, float x, float y, int wi
       stroke_ = controller_->loop().beginStroke(std::make_unique<PullStroke>(settings),
                                                 toolInput(hit->world, hit->rest));
       grabDistance_ = glm::dot(hit->world - origin, direction);
-      if (recording_->recording())
-        recording_->strokes().beginGrab(recording_->seconds(), hit->rest,
-                                        Eigen::Vector3d(hit->world.x, hit->world.y, hit->world.z),
-                                        settings.keep);
+      if (StrokeCapture* capture = recording_->capturing())
+        capture->beginGrab(recording_->seconds(), hit->rest, toEigen(hit->world), settings.keep);
     }
   } else if (stroke.strokeActive && stroke_ != 0) {
     const glm::vec3 target = origin + grabDistance_ * direction;
     controller_->loop().updateStroke(stroke_, toolInput(target, std::nullopt));
-    if (recording_->recording())
-      recording_->strokes().moveGrab(recording_->seconds(), Eigen::Vector3d(target.x, target.y, target.z));
+    if (StrokeCapture* capture = recording_->capturing())
+      capture->move(recording_->seconds(), toEigen(target), std::nullopt);
   }
-  if (stroke.strokeEnded) {
-    if (stroke_ != 0 && recording_->recording()) recording_->strokes().endGrab(recording_->seconds());
-    endToolStroke();
-  }
+  if (stroke.strokeEnded) endToolStroke();
 }
 
 void SculptApp::stylusStroke(const PointerResult& stroke, float x, float y, int width, int height) {
@@ -180,7 +178,7 @@ void SculptApp::stylusStroke(const PointerResult& stroke, float x, float y, int 
   }
   if (!stylusHeld_) return;
   const glm::vec3 at = origin + grabDistance_ * direction;
-  stylus_.moveHand(Eigen::Vector3d(at.x, at.y, at.z), !stroke.strokeEnded);
+  stylus_.moveHand(toEigen(at), !stroke.strokeEnded);
   if (stroke.strokeEnded) stylusHeld_ = false;
 }
 
@@ -206,21 +204,31 @@ void SculptApp::brushStroke(const PointerResult& stroke, float x, float y, int w
     const double radius = brushWorldRadius(x, y, cursorDepth_, width, height);
     if (!(radius > 0.0)) return;
     std::unique_ptr<Tool> tool;
+    StrokeCapture* capture = recording_->capturing();
+    const double now = recording_->seconds();
     if (strokeTool_ == ToolKind::Inflate) {
-      tool = std::make_unique<InflateStroke>(InflateStroke::Settings{radius, t.pressure * t.strength});
+      const InflateStroke::Settings settings{radius, t.pressure * t.strength};
+      tool = std::make_unique<InflateStroke>(settings);
+      if (capture)
+        capture->beginInflate(now, hit->rest, settings,
+                              (strokeInverted_ ? -1.0 : 1.0) * settings.pressure);
     } else if (strokeTool_ == ToolKind::Paint) {
-      tool = std::make_unique<PaintStroke>(PaintStroke::Settings{paintBrush(t, radius, mirrorCentre()),
-                                                                 mirrorCentre()});
+      const PaintStroke::Settings settings{paintBrush(t, radius, mirrorCentre()), mirrorCentre()};
+      tool = std::make_unique<PaintStroke>(settings);
+      if (capture) capture->beginPaint(now, hit->rest, settings);
       pendingCapture_ = Capture::Materials;  // set now: undo waits for the stroke's entry
       pendingLabel_ = paintLabel(t.field);
     } else {
       tool = std::make_unique<PinStroke>(PinStroke::Settings{radius, std::nullopt});
+      if (capture) capture->beginPin(now, hit->rest, radius, strokeInverted_);
       pendingCapture_ = Capture::Pins;
       pendingLabel_ = strokeInverted_ ? "Unpin" : "Pin";
     }
     stroke_ = controller_->loop().beginStroke(std::move(tool), toolInput(hit->world, hit->rest));
   } else if (hit && stroke_ != 0 && stroke.strokeActive) {
     controller_->loop().updateStroke(stroke_, toolInput(hit->world, hit->rest));
+    if (StrokeCapture* capture = recording_->capturing())
+      capture->move(recording_->seconds(), toEigen(hit->world), hit->rest);
   }
   if (stroke.strokeEnded) {
     const bool began = stroke_ != 0;
@@ -258,6 +266,8 @@ void SculptApp::curveStroke(const PointerResult& stroke, float x, float y, int w
       CurveStroke::Settings settings;
       settings.polyline = curveRest_;
       settings.profile = model_.tools.smoothCurve ? CurveProfile::Smooth : CurveProfile::Rigid;
+      if (StrokeCapture* capture = recording_->capturing())
+        capture->beginCurve(recording_->seconds(), curveRest_, settings.profile, toEigen(*start));
       stroke_ = controller_->loop().beginStroke(std::make_unique<CurveStroke>(std::move(settings)),
                                                 toolInput(*start, std::nullopt));
       curveGrabbed_ = true;
@@ -268,8 +278,11 @@ void SculptApp::curveStroke(const PointerResult& stroke, float x, float y, int w
   }
   if (curveGrabbed_) {
     if (stroke.strokeActive && stroke_ != 0)
-      if (const std::optional<glm::vec3> at = camera_.unproject(x, y, curveDepth_, width, height))
+      if (const std::optional<glm::vec3> at = camera_.unproject(x, y, curveDepth_, width, height)) {
         controller_->loop().updateStroke(stroke_, toolInput(*at, std::nullopt));
+        if (StrokeCapture* capture = recording_->capturing())
+          capture->move(recording_->seconds(), toEigen(*at), std::nullopt);
+      }
     if (stroke.strokeEnded) {
       endToolStroke();
       curveGrabbed_ = false;

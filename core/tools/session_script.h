@@ -98,7 +98,9 @@ using TopologyEvent = TopologyOperation;
 struct ScriptEvent {
   size_t index = 0;  ///< position in the file's "events" array
   double time = 0;   ///< s
-  std::variant<GrabEvent, InflateEvent, PaintEvent, PinEvent, CurveEvent, TopologyEvent> action;
+  using Action =
+      std::variant<GrabEvent, InflateEvent, PaintEvent, PinEvent, CurveEvent, TopologyEvent>;
+  Action action;
   const char* typeName() const;  ///< "grab", "inflate", "paint", "pin", "curve", "topology"
   /// When it stops acting: the start for paint and pin, start + release (or the last path key)
   /// for grab and curve, start + duration for inflate.

@@ -58,7 +58,7 @@ void InflateStroke::update(ToolContext& context, const ToolInput& input) {
   const double pressure = pressureOf(input);
   const std::optional<Eigen::Vector3d> rest =
       input.restPoint ? input.restPoint : context.restPointAt(input.position);
-  if (rest && (*rest - centre_).norm() >= settings_.respacing * settings_.radius) {
+  if (rest && brushMoved(centre_, *rest, settings_.respacing, settings_.radius)) {
     centre_ = *rest;
     pressure_ = pressure;
     inflate_->press(centre_, settings_.radius, pressure_);
@@ -93,7 +93,7 @@ void PaintStroke::begin(ToolContext& context, const ToolInput& input) {
 void PaintStroke::update(ToolContext& context, const ToolInput& input) {
   const std::optional<Eigen::Vector3d> rest =
       input.restPoint ? input.restPoint : context.restPointAt(input.position);
-  if (rest && (*rest - last_).norm() >= settings_.spacing * settings_.brush.radius)
+  if (rest && brushMoved(last_, *rest, settings_.spacing, settings_.brush.radius))
     dab(context, *rest);
 }
 

@@ -19,6 +19,13 @@
 
 namespace sculpt {
 
+/// Whether a brush that last acted at rest point `last` acts again with the input over `now`:
+/// once it has moved `spacing` of its `radius` (paint dabs, inflate re-presses).
+inline bool brushMoved(const Eigen::Vector3d& last, const Eigen::Vector3d& now, double spacing,
+                       double radius) {
+  return (now - last).norm() >= spacing * radius;
+}
+
 /// Pull (push with kToolInvert): a spring from the material point under the input at begin to
 /// the input's position.
 class PullStroke : public Tool {
