@@ -3,6 +3,7 @@
 #include <algorithm>
 #include <array>
 #include <cstdio>
+#include <string>
 
 #include <imgui.h>
 
@@ -21,6 +22,47 @@ void copyTo(std::array<char, 1024>& buffer, const std::string& text) {
   const size_t n = std::min(text.size(), buffer.size() - 1);
   std::copy_n(text.begin(), n, buffer.begin());
   buffer[n] = 0;
+}
+
+ImU32 markColour(const char* type) {
+  const std::string t(type);
+  if (t == "grab") return IM_COL32(90, 160, 255, 255);
+  if (t == "curve") return IM_COL32(60, 210, 220, 255);
+  if (t == "inflate") return IM_COL32(255, 150, 50, 255);
+  if (t == "paint") return IM_COL32(110, 220, 90, 255);
+  return IM_COL32(200, 140, 255, 255);  // pin
+}
+
+// The take's strokes on the timeline slider just drawn: a bar for a stroke that lasts (grab,
+// curve, inflate), a tick for an instant (dab, pin), at the frames the slider's grab stands on.
+void drawTimelineMarks(const RecordStatus& s, int lastFrame) {
+  if (s.marks.empty() || lastFrame <= 0 || s.takeFps <= 0) return;
+  const ImVec2 lo = ImGui::GetItemRectMin(), hi = ImGui::GetItemRectMax();
+  // ImGui's slider: 2 px padding, a grab as wide as one value (at least GrabMinSize).
+  const float padding = 2.0f, travel = hi.x - lo.x - 2.0f * padding;
+  const float grab = std::max(travel / static_cast<float>(lastFrame + 1), ImGui::GetStyle().GrabMinSize);
+  const float x0 = lo.x + padding + 0.5f * grab, usable = std::max(1.0f, travel - grab);
+  const auto x = [&](double seconds) {
+    const double f = std::clamp(seconds * s.takeFps / lastFrame, 0.0, 1.0);
+    return x0 + static_cast<float>(f) * usable;
+  };
+  ImDrawList* draw = ImGui::GetWindowDrawList();
+  const float top = hi.y - 0.3f * (hi.y - lo.y), bottom = hi.y - 1.0f;
+  for (const TimelineMark& mark : s.marks) {
+    const float a = x(mark.start), b = std::max(x(mark.end), a + 2.0f);
+    draw->AddRectFilled(ImVec2(a, top), ImVec2(b, bottom), markColour(mark.type));
+  }
+  if (ImGui::IsItemHovered()) {
+    std::string counts;
+    for (const char* type : {"grab", "curve", "inflate", "paint", "pin"}) {
+      const auto n = std::count_if(s.marks.begin(), s.marks.end(),
+                                   [type](const TimelineMark& m) { return std::string(m.type) == type; });
+      if (n > 0) counts += (counts.empty() ? "" : ", ") + std::to_string(n) + " " + type;
+    }
+    ImGui::SetTooltip("Strokes of the take: %s\nFile > Save take script keeps them for "
+                      "sculpt-cli record --script",
+                      counts.c_str());
+  }
 }
 
 }  // namespace
@@ -77,7 +119,8 @@ void drawRecordStrip(AppModel& m) {
                                                 0.3f * row, IM_COL32(230, 40, 40, 255));
     ImGui::Dummy(ImVec2(row, row));
     ImGui::SameLine();
-    ImGui::Text("REC %u frames, %.2f s, %s", s.frames, s.seconds, byteSize(s.bytes).c_str());
+    ImGui::Text("REC %u frames, %.2f s, %s, %zu stroke events", s.frames, s.seconds,
+                byteSize(s.bytes).c_str(), s.strokes);
     return;
   }
   if (ImGui::Button("Record", ImVec2(scaled(64), 0))) r.toggleRecord = true;
@@ -112,6 +155,7 @@ void drawRecordStrip(AppModel& m) {
   std::snprintf(label, sizeof label, "%.2f s", s.takeFps > 0 ? frame / s.takeFps : 0.0);
   if (ImGui::SliderInt("##timeline", &frame, 0, last, label, ImGuiSliderFlags_AlwaysClamp))
     r.playhead = static_cast<uint32_t>(frame);
+  drawTimelineMarks(s, last);
   ImGui::SameLine();
   ImGui::TextUnformatted(info.c_str());
   ImGui::EndDisabled();

@@ -6,6 +6,7 @@
 #include <cstdint>
 #include <optional>
 #include <string>
+#include <vector>
 
 namespace sculpt::app {
 
@@ -21,6 +22,13 @@ struct RecordRequests {
   bool saveScript = false;  ///< the take's strokes as a session script beside the export path
 };
 
+/// A stroke of the take as the timeline marks it: when it acts (an instant for a dab or a pin)
+/// and the script event type it was captured as ("grab", "inflate", "paint", "pin", "curve").
+struct TimelineMark {
+  double start = 0, end = 0;  ///< s of take time
+  const char* type = "";
+};
+
 struct RecordStatus {
   double fps = 30.0;  ///< the next take's frame rate (a setting)
   bool recording = false;
@@ -33,6 +41,7 @@ struct RecordStatus {
   uint32_t playhead = 0;   ///< the frame shown when not live
   bool playingBack = false;
   size_t strokes = 0;  ///< script events captured in the take
+  std::vector<TimelineMark> marks;  ///< of those events, in time order
 };
 
 struct ExportDialog {

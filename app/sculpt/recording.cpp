@@ -24,7 +24,7 @@ void Recording::start(SimulationLoop& loop) {
 
 void Recording::stop() {
   if (!recorder_) return;
-  strokes_.end(recorder_->duration());  // a stroke still held ends with the take
+  strokes_.end(recorder_->time());  // a stroke still held ends with the take
   recorder_->stop();
   recorder_->detach();
   std::shared_ptr<const Take> take = recorder_->take();
@@ -41,6 +41,8 @@ double Recording::seconds() const {
   if (recorder_) return recorder_->duration();
   return take_ ? take_->duration() : 0.0;
 }
+
+double Recording::takeTime() const { return recorder_ ? recorder_->time() : seconds(); }
 
 size_t Recording::memoryBytes() const {
   if (recorder_) return recorder_->memoryBytes();

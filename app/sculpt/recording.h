@@ -60,7 +60,10 @@ class Recording {
 
   /// The mouse strokes of the take being recorded (or of the last one), as script events.
   const StrokeCapture& strokes() const { return strokes_; }
-  /// Where the strokes made now go, at take time seconds(): null unless recording.
+  /// The take time of the latest step while recording (finer than seconds(), which counts
+  /// whole frames); seconds() otherwise.
+  double takeTime() const;
+  /// Where the strokes made now go, at takeTime(): null unless recording.
   StrokeCapture* capturing() { return recording() ? &strokes_ : nullptr; }
 
  private:

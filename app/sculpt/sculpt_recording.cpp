@@ -131,7 +131,11 @@ void SculptApp::publishRecordStatus() {
   s.live = recording_->isLive();
   s.playhead = recording_->playhead();
   s.playingBack = recording_->playingBack();
-  s.strokes = recording_->strokes().script().events.size();
+  const SessionScript& strokes = recording_->strokes().script();
+  s.marks.clear();  // rebuilt each frame: a stroke in progress grows
+  for (const ScriptEvent& event : strokes.events)
+    s.marks.push_back({event.time, event.endTime(), event.typeName()});
+  s.strokes = strokes.events.size();
   if (s.recording || s.playingBack) sceneChanged_ = true;  // keep drawing while the figures move
 }
 

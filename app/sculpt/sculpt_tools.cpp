@@ -123,7 +123,7 @@ ToolInput SculptApp::toolInput(const glm::vec3& world, const std::optional<Eigen
 
 void SculptApp::endToolStroke() {
   if (stroke_ == 0) return;
-  if (StrokeCapture* capture = recording_->capturing()) capture->end(recording_->seconds());
+  if (StrokeCapture* capture = recording_->capturing()) capture->end(recording_->takeTime());
   controller_->loop().endStroke(stroke_, ToolInput{});
   stroke_ = 0;
 }
@@ -152,13 +152,13 @@ void SculptApp::pullStroke(const PointerResult& stroke, float x, float y, int wi
                                                 toolInput(hit->world, hit->rest));
       grabDistance_ = glm::dot(hit->world - origin, direction);
       if (StrokeCapture* capture = recording_->capturing())
-        capture->beginGrab(recording_->seconds(), hit->rest, toEigen(hit->world), settings.keep);
+        capture->beginGrab(recording_->takeTime(), hit->rest, toEigen(hit->world), settings.keep);
     }
   } else if (stroke.strokeActive && stroke_ != 0) {
     const glm::vec3 target = origin + grabDistance_ * direction;
     controller_->loop().updateStroke(stroke_, toolInput(target, std::nullopt));
     if (StrokeCapture* capture = recording_->capturing())
-      capture->move(recording_->seconds(), toEigen(target), std::nullopt);
+      capture->move(recording_->takeTime(), toEigen(target), std::nullopt);
   }
   if (stroke.strokeEnded) endToolStroke();
 }
@@ -205,7 +205,7 @@ void SculptApp::brushStroke(const PointerResult& stroke, float x, float y, int w
     if (!(radius > 0.0)) return;
     std::unique_ptr<Tool> tool;
     StrokeCapture* capture = recording_->capturing();
-    const double now = recording_->seconds();
+    const double now = recording_->takeTime();
     if (strokeTool_ == ToolKind::Inflate) {
       const InflateStroke::Settings settings{radius, t.pressure * t.strength};
       tool = std::make_unique<InflateStroke>(settings);
@@ -228,7 +228,7 @@ void SculptApp::brushStroke(const PointerResult& stroke, float x, float y, int w
   } else if (hit && stroke_ != 0 && stroke.strokeActive) {
     controller_->loop().updateStroke(stroke_, toolInput(hit->world, hit->rest));
     if (StrokeCapture* capture = recording_->capturing())
-      capture->move(recording_->seconds(), toEigen(hit->world), hit->rest);
+      capture->move(recording_->takeTime(), toEigen(hit->world), hit->rest);
   }
   if (stroke.strokeEnded) {
     const bool began = stroke_ != 0;
@@ -267,7 +267,7 @@ void SculptApp::curveStroke(const PointerResult& stroke, float x, float y, int w
       settings.polyline = curveRest_;
       settings.profile = model_.tools.smoothCurve ? CurveProfile::Smooth : CurveProfile::Rigid;
       if (StrokeCapture* capture = recording_->capturing())
-        capture->beginCurve(recording_->seconds(), curveRest_, settings.profile, toEigen(*start));
+        capture->beginCurve(recording_->takeTime(), curveRest_, settings.profile, toEigen(*start));
       stroke_ = controller_->loop().beginStroke(std::make_unique<CurveStroke>(std::move(settings)),
                                                 toolInput(*start, std::nullopt));
       curveGrabbed_ = true;
@@ -281,7 +281,7 @@ void SculptApp::curveStroke(const PointerResult& stroke, float x, float y, int w
       if (const std::optional<glm::vec3> at = camera_.unproject(x, y, curveDepth_, width, height)) {
         controller_->loop().updateStroke(stroke_, toolInput(*at, std::nullopt));
         if (StrokeCapture* capture = recording_->capturing())
-          capture->move(recording_->seconds(), toEigen(*at), std::nullopt);
+          capture->move(recording_->takeTime(), toEigen(*at), std::nullopt);
       }
     if (stroke.strokeEnded) {
       endToolStroke();

@@ -67,6 +67,11 @@ double Recorder::duration() const {
   return take_.duration();
 }
 
+double Recorder::time() const {
+  const std::lock_guard lock(mutex_);
+  return takeTime_;
+}
+
 size_t Recorder::memoryBytes() const {
   const std::lock_guard lock(mutex_);
   return take_.memoryBytes();

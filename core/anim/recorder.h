@@ -47,6 +47,9 @@ class Recorder {
   double fps() const { return fps_; }
   uint32_t frameCount() const;
   double duration() const;
+  /// The take time of the last step observed (s; 0 before the first): where a stroke made now
+  /// lands, to the step rather than to the frame.
+  double time() const;
   size_t memoryBytes() const;
   /// A copy of the take so far (cheap next to an export: O(frames x control points)).
   std::shared_ptr<const Take> take() const;

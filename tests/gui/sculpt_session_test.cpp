@@ -9,13 +9,17 @@
 #include <GLFW/glfw3.h>
 #include <gtest/gtest.h>
 
+#include <algorithm>
 #include <chrono>
+#include <cstdio>
 #include <cstdlib>
 #include <filesystem>
 #include <fstream>
 #include <functional>
 #include <limits>
+#include <map>
 #include <memory>
+#include <string>
 #include <thread>
 
 #include "edit/topology_edit.h"
@@ -26,6 +30,7 @@
 #include "sculpt/sculpt_app.h"
 #include "support/gl_context.h"
 #include "support/scratch_directory.h"
+#include "tools/session_script.h"
 
 namespace sculpt::app {
 namespace {
@@ -425,6 +430,104 @@ TEST_F(SculptSession, WorkLeftByACrashIsOfferedAndRecovered) {
   frames(1);
   EXPECT_TRUE(glfwWindowShouldClose(window_));
   EXPECT_FALSE(fs::exists(recovery)) << "closing without saving, on purpose, keeps no recovery";
+}
+
+TEST_F(SculptSession, StrokesOfATakeAreMarkedOnTheTimelineAndSavedAsAScriptThatReRecords) {
+  const std::string block3 = std::string(SCULPT_SOURCE_DIR) + "/assets/block3.json";
+  open(block3);
+  frames(30);
+  ASSERT_TRUE(app_->sceneView().frame().physicsReady);
+  const ViewRect view = app_->viewRect();
+  const ImVec2 middle(0.5f * (view.min.x + view.max.x), 0.5f * (view.min.y + view.max.y));
+  ToolState& tools = app_->model().tools;
+  tools.mirrorX = false;
+
+  app_->model().requests.record.toggleRecord = true;
+  frames(1);
+  ASSERT_TRUE(app_->recording().recording());
+  // Pull, paint, inflate held still, pin, and a curve drawn (not an event) then dragged.
+  tools.tool = ToolKind::Pull;
+  drag(ImVec2(middle.x, middle.y - 30), 60.0f, -20.0f, 8);
+  release();
+  tools.tool = ToolKind::Paint;
+  tools.radiusPixels = 40.0f;
+  drag(ImVec2(middle.x - 60, middle.y), 120.0f, 0.0f, 10);
+  release();
+  tools.tool = ToolKind::Inflate;
+  tools.radiusPixels = 120.0f;
+  tools.pressure = 3.0e4;
+  drag(ImVec2(middle.x + 10, middle.y + 10), 0.0f, 0.0f, 1);
+  frames(8);
+  release();
+  tools.tool = ToolKind::Pin;
+  drag(ImVec2(middle.x - 40, middle.y + 40), 80.0f, 0.0f, 6);
+  release();
+  tools.tool = ToolKind::Curve;
+  drag(ImVec2(middle.x - 80, middle.y + 20), 160.0f, 0.0f, 12);
+  release();
+  pointer_.shift = true;
+  drag(ImVec2(middle.x + 3, middle.y + 20), 0.0f, -50.0f, 6);
+  pointer_.shift = false;
+  release();
+  frames(3);
+  app_->model().requests.record.toggleRecord = true;
+  frames(1);
+  ASSERT_FALSE(app_->recording().recording());
+  ASSERT_NE(app_->recording().take(), nullptr);
+  const double duration = app_->recording().take()->duration();
+
+  // One event per grab and curve drag, and what each brush acted as, in take time.
+  const SessionScript& script = app_->recording().strokes().script();
+  std::map<std::string, int> types;
+  double previous = 0.0;
+  for (const ScriptEvent& event : script.events) {
+    ++types[event.typeName()];
+    EXPECT_GE(event.time, previous) << event.typeName() << " in time order";
+    EXPECT_LE(event.endTime(), duration + 1e-9) << event.typeName() << " ends within the take";
+    previous = event.time;
+  }
+  std::printf("[ captured ] take %.2f s: %d grab, %d paint, %d inflate, %d pin, %d curve\n",
+              duration, types["grab"], types["paint"], types["inflate"], types["pin"],
+              types["curve"]);
+  EXPECT_EQ(types["grab"], 1);
+  EXPECT_GE(types["paint"], 2) << "dabs along the stroke";
+  EXPECT_EQ(types["inflate"], 1) << "held still: one press";
+  EXPECT_GE(types["pin"], 2);
+  EXPECT_EQ(types["curve"], 1);
+  const auto inflate = std::find_if(script.events.begin(), script.events.end(), [](const ScriptEvent& e) {
+    return std::holds_alternative<InflateEvent>(e.action);
+  });
+  ASSERT_NE(inflate, script.events.end());
+  EXPECT_GT(std::get<InflateEvent>(inflate->action).duration, 0.05) << "held for 8 frames";
+  EXPECT_EQ(app_->model().record.marks.size(), script.events.size()) << "each is marked";
+
+  // The timeline with its marks (hovered: the tooltip counts them), and the script saved.
+  const fs::path glb = folder_ / "take.glb";
+  std::snprintf(app_->model().exportDialog.path.data(), app_->model().exportDialog.path.size(), "%s",
+                glb.c_str());
+  app_->model().requests.record.saveScript = true;
+  frames(1);
+  const fs::path saved = folder_ / "take_script.json";
+  ASSERT_TRUE(fs::exists(saved));
+  const SessionScript loaded = loadSessionScript(saved);
+  EXPECT_EQ(loaded.events.size(), script.events.size());
+  pointer_.x = 0.5f * (view.min.x + view.max.x), pointer_.y = 778.0f;  // over the timeline row
+  frames(3, "record-strokes-timeline.png");
+
+  // Replayed and re-recorded from the command line.
+  const fs::path cache = folder_ / "again.pc2", log = folder_ / "again.txt";
+  char seconds[32];
+  std::snprintf(seconds, sizeof seconds, "%.3f", duration);
+  const std::string command = std::string(SCULPT_BINARY_DIR) + "/bin/sculpt-cli record " + block3 +
+                              " --script " + saved.string() + " --seconds " + seconds + " --out " +
+                              cache.string() + " > " + log.string() + " 2>&1";
+  ASSERT_EQ(std::system(command.c_str()), 0) << command;
+  std::ifstream in(log);
+  std::string line, last;
+  while (std::getline(in, line)) last = line;
+  std::printf("[ re-recorded ] %s\n", last.c_str());
+  EXPECT_EQ(last.rfind("frames=", 0), 0u) << last;
+  EXPECT_TRUE(fs::exists(cache));
 }
 
 TEST_F(SculptSession, OpeningAProjectOffersItsNewerRecoveryFile) {
