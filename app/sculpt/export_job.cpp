@@ -8,6 +8,7 @@
 #include <utility>
 
 #include "anim/take_surface.h"
+#include "util/parallel_for.h"
 
 namespace sculpt::app {
 
@@ -27,8 +28,10 @@ bool ExportJob::start(std::shared_ptr<const Take> take, FrameRange range,
   fraction_ = 0.0;
   worker_ = std::thread([this, take = std::move(take), range, path = std::move(path), format,
                          options] {
-    // Below the window's threads: the export takes the cores the drawing leaves.
+    // Below the window's threads, on this thread alone: the export takes what the drawing and
+    // the simulation leave, and never holds the worker pool that their loops share.
     setpriority(PRIO_PROCESS, static_cast<id_t>(::syscall(SYS_gettid)), 10);
+    const InlineLoopsOnThisThread inlineLoops;
     Outcome outcome;
     outcome.path = path;
     try {

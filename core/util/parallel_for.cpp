@@ -116,10 +116,16 @@ WorkerPool& pool() {
 }
 
 // True on the pool's own threads: a nested parallel loop then runs inline instead of waiting
-// for workers that are busy running its parent.
+// for workers that are busy running its parent. Also set by InlineLoopsOnThisThread.
 thread_local bool insideParallelLoop = false;
 
 }  // namespace
+
+InlineLoopsOnThisThread::InlineLoopsOnThisThread() : previous_(insideParallelLoop) {
+  insideParallelLoop = true;
+}
+
+InlineLoopsOnThisThread::~InlineLoopsOnThisThread() { insideParallelLoop = previous_; }
 
 unsigned workerCount() {
   static const unsigned count = [] {

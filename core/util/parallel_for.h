@@ -15,4 +15,18 @@ unsigned workerCount();
 void parallelChunks(uint32_t n, uint32_t minParallel,
                     const std::function<void(uint32_t begin, uint32_t end, unsigned worker)>& body);
 
+/// While alive, parallelChunks called on this thread run inline on it. For background work (an
+/// export) that must neither take every core nor hold the shared pool, which serialises loops
+/// and would make the interactive threads' loops wait for it.
+class InlineLoopsOnThisThread {
+ public:
+  InlineLoopsOnThisThread();
+  ~InlineLoopsOnThisThread();
+  InlineLoopsOnThisThread(const InlineLoopsOnThisThread&) = delete;
+  InlineLoopsOnThisThread& operator=(const InlineLoopsOnThisThread&) = delete;
+
+ private:
+  bool previous_;
+};
+
 }  // namespace sculpt

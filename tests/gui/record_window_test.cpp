@@ -33,6 +33,7 @@ struct FrameTimes {
     return sorted.empty() ? 0.0 : sorted[sorted.size() / 2];
   }
   double max() const { return ms.empty() ? 0.0 : *std::max_element(ms.begin(), ms.end()); }
+  size_t argmax() const { return static_cast<size_t>(std::max_element(ms.begin(), ms.end()) - ms.begin()); }
 };
 
 double timedFrame(SculptApp& app) {
@@ -156,9 +157,9 @@ TEST(RecordWindow, RecordsScrubsAndExportsWithoutStallingTheWindow) {
     EXPECT_TRUE(hasToast(app.model(), "wrote " + glb));
     EXPECT_EQ(filesIn(folder).size(), 1u);
 
-    // No frame over twice the median of its export. Other processes on a shared machine (ctest
-    // runs tests side by side) add spikes of their own, so 1% of the frames (at least one) may pass 2x; none may
-    // pass 4x, which would mean the frame waited on the worker.
+    // No frame over twice the median of its export: the worker runs below the window's
+    // priority, on its own thread, and never holds what the frame needs. (ctest runs this test
+    // with nothing beside it: another process on the second core would be measured too.)
     for (const auto& [name, times] : {std::pair{"cancelled export", &cancelled}, std::pair{"export", &written}}) {
       const double median = times->median();
       size_t over = 0;
@@ -167,12 +168,11 @@ TEST(RecordWindow, RecordsScrubsAndExportsWithoutStallingTheWindow) {
         over += ms > 2.0 * median;
         all += std::to_string(static_cast<int>(ms)) + " ";
       }
-      std::printf("[ measured ] %s: %zu frames, median %.1f ms, max %.1f ms (%.2fx), %zu over 2x "
-                  "(idle: median %.1f ms, max %.1f ms)\n",
-                  name, times->ms.size(), median, times->max(), times->max() / median, over,
-                  idle.median(), idle.max());
-      EXPECT_LE(over, std::max<size_t>(1, times->ms.size() / 100)) << name << ": " << all;
-      EXPECT_LE(times->max(), 4.0 * median) << name << ": a frame waited on the worker: " << all;
+      std::printf("[ measured ] %s: %zu frames, median %.1f ms, max %.1f ms (%.2fx, frame %zu), "
+                  "%zu over 2x (idle: median %.1f ms, max %.1f ms)\n[ measured ] %s\n",
+                  name, times->ms.size(), median, times->max(), times->max() / median,
+                  times->argmax(), over, idle.median(), idle.max(), all.c_str());
+      EXPECT_LE(times->max(), 2.0 * median) << name << ": " << all;
     }
     EXPECT_GE(written.ms.size(), 3u) << "the export ran over several frames";
 

@@ -82,5 +82,25 @@ TEST(ParallelChunks, CallsFromSeveralThreadsAreSerialisedAndComplete) {
   EXPECT_EQ(failures.load(), 0);
 }
 
+TEST(ParallelChunks, InsideAnInlineScopeLoopsRunOnTheCallingThreadAlone) {
+  const std::thread::id caller = std::this_thread::get_id();
+  std::vector<std::thread::id> threads;
+  {
+    const InlineLoopsOnThisThread inlineLoops;
+    parallelChunks(100000, 1, [&](uint32_t begin, uint32_t end, unsigned worker) {
+      EXPECT_EQ(begin, 0u);
+      EXPECT_EQ(end, 100000u);
+      EXPECT_EQ(worker, 0u);
+      threads.push_back(std::this_thread::get_id());
+    });
+  }
+  ASSERT_EQ(threads.size(), 1u);
+  EXPECT_EQ(threads[0], caller);
+  // Out of the scope the loop is shared again (on a machine with more than one thread).
+  std::atomic<int> chunks{0};
+  parallelChunks(100000, 1, [&](uint32_t, uint32_t, unsigned) { chunks.fetch_add(1); });
+  EXPECT_EQ(chunks.load(), static_cast<int>(workerCount()));
+}
+
 }  // namespace
 }  // namespace sculpt
