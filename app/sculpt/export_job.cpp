@@ -1,5 +1,7 @@
 #include "sculpt/export_job.h"
 
+#include <pthread.h>
+#include <sched.h>
 #include <sys/resource.h>
 #include <sys/syscall.h>
 #include <unistd.h>
@@ -17,7 +19,7 @@ ExportJob::~ExportJob() {
   if (worker_.joinable()) worker_.join();
 }
 
-bool ExportJob::start(std::shared_ptr<const Take> take, FrameRange range,
+bool ExportJob::start(std::shared_ptr<const Take> take, FrameRange range, uint32_t every,
                       std::filesystem::path path, ExportFormat format,
                       TakeExportOptions options) {
   if (busy_) return false;
@@ -26,17 +28,20 @@ bool ExportJob::start(std::shared_ptr<const Take> take, FrameRange range,
   cancel_ = false;
   finished_ = false;
   fraction_ = 0.0;
-  worker_ = std::thread([this, take = std::move(take), range, path = std::move(path), format,
+  worker_ = std::thread([this, take = std::move(take), range, every, path = std::move(path), format,
                          options] {
-    // Below the window's threads, on this thread alone: the export takes what the drawing and
-    // the simulation leave, and never holds the worker pool that their loops share.
-    setpriority(PRIO_PROCESS, static_cast<id_t>(::syscall(SYS_gettid)), 10);
+    // On this thread alone and only on idle cores (SCHED_IDLE; where that is refused, nice 19):
+    // the export takes what the drawing and the simulation leave, and never holds the worker
+    // pool that their loops share.
+    sched_param idle{};
+    if (pthread_setschedparam(pthread_self(), SCHED_IDLE, &idle) != 0)
+      setpriority(PRIO_PROCESS, static_cast<id_t>(::syscall(SYS_gettid)), 19);
     const InlineLoopsOnThisThread inlineLoops;
     Outcome outcome;
     outcome.path = path;
     try {
       // The surface's deformers are built here too: nothing of the export runs on the UI thread.
-      const TakeSurface surface(take, range);
+      const TakeSurface surface(take, range, every);
       ProgressReporter progress([this](double fraction, std::string_view) {
         fraction_ = fraction;
         return !cancel_.load();

@@ -32,10 +32,10 @@ class ExportJob {
   ExportJob(const ExportJob&) = delete;
   ExportJob& operator=(const ExportJob&) = delete;
 
-  /// Starts writing frames `range` of `take` to `path`; false (nothing started) while an export
-  /// runs or its outcome has not been collected.
-  bool start(std::shared_ptr<const Take> take, FrameRange range, std::filesystem::path path,
-             ExportFormat format, TakeExportOptions options);
+  /// Starts writing every `every`-th frame of `range` of `take` to `path` (TakeSurface); false
+  /// (nothing started) while an export runs or its outcome has not been collected.
+  bool start(std::shared_ptr<const Take> take, FrameRange range, uint32_t every,
+             std::filesystem::path path, ExportFormat format, TakeExportOptions options);
   /// Started and not yet collected by poll().
   bool busy() const { return busy_; }
   /// The fraction written so far, in [0, 1].

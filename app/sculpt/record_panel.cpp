@@ -187,6 +187,11 @@ void drawExportDialog(AppModel& m) {
   ImGui::InputInt("Last frame", &d.last);
   d.first = std::clamp(d.first, 1, frames);
   d.last = std::clamp(d.last, d.first, frames);
+  ImGui::SetNextItemWidth(scaled(120));
+  ImGui::InputInt("Every n-th frame", &d.every);
+  d.every = std::clamp(d.every, 1, frames);
+  if (ImGui::IsItemHovered())
+    ImGui::SetTooltip("Export every n-th recorded frame: the take's frame rate divided by n");
   if (exportFormatAt(d.format) == ExportFormat::Glb) {
     ImGui::SetNextItemWidth(scaled(120));
     ImGui::InputDouble("Key tolerance", &d.keyTolerance, 0, 0, "%.2g");
@@ -196,10 +201,13 @@ void drawExportDialog(AppModel& m) {
                         "by more than this part of the bounding-box diagonal");
   }
   ImGui::EndDisabled();
-  ImGui::Text("%d frames, about %s", d.last - d.first + 1, byteSize(d.estimateBytes).c_str());
+  ImGui::Text("%d frames at %.4g fps, about %s", (d.last - d.first) / d.every + 1,
+              m.record.takeFps / d.every, byteSize(d.estimateBytes).c_str());
   if (!d.problem.empty()) ImGui::TextColored(ImVec4(1.0f, 0.45f, 0.4f, 1.0f), "%s", d.problem.c_str());
   if (d.running) {
     ImGui::ProgressBar(static_cast<float>(d.fraction), ImVec2(scaled(420), 0));
+    if (m.status.playing)  // the export only takes cores the simulation and the view leave
+      ImGui::TextDisabled("The simulation is running: pause it for a faster export.");
     if (ImGui::Button("Cancel")) r.cancelExport = true;
   } else {
     ImGui::BeginDisabled(!d.problem.empty());

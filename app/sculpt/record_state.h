@@ -49,6 +49,7 @@ struct ExportDialog {
   int format = 0;  ///< index into kExportFormatLabels
   std::array<char, 1024> path{};
   int first = 1, last = 1;  ///< frame range, 1-based and inclusive as shown
+  int every = 1;            ///< every n-th frame of the range: the take's fps / n
   double keyTolerance = 1e-3;  ///< glTF: of the rest bounding-box diagonal
   // Filled by the application each frame
   std::string problem;        ///< why Export is not allowed now; empty: it is

@@ -223,7 +223,7 @@ class SculptApp {
   uint32_t shownFrame_ = 0;
   const SceneGeometry* shownGeometry_ = nullptr;  ///< the view's geometry when it was shown
   const Take* dialogTake_ = nullptr;  ///< the take the export dialog's range and estimate are for
-  int estimatedFirst_ = -1, estimatedLast_ = -1, estimatedFormat_ = -1;
+  int estimatedFirst_ = -1, estimatedLast_ = -1, estimatedEvery_ = -1, estimatedFormat_ = -1;
   // Headless recording (take_rendering.cpp)
   /// The frame last drawn as writeScreenshot captures it (RGBA8, top row first).
   std::vector<uint8_t> captureFrame(const ScreenshotSettings& settings, int& width, int& height);

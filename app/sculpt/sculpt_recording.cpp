@@ -28,6 +28,11 @@ std::string exportedFiles(const ExportJob::Outcome& outcome) {
   return std::to_string(files.size()) + " files " + files.front().string() + " ...";
 }
 
+// The dialog's 1-based inclusive range as a take range.
+FrameRange exportRange(const ExportDialog& d) {
+  return FrameRange{static_cast<uint32_t>(d.first - 1), static_cast<uint32_t>(d.last - d.first + 1)};
+}
+
 }  // namespace
 
 void SculptApp::leaveLive() {
@@ -201,11 +206,13 @@ void SculptApp::updateExportDialog() {
   if (!take && d.problem.empty()) d.problem = "nothing recorded yet";
   if (!take || d.running) return;
   // The estimate, once per range and format (a TakeSurface is cheap, but not free every frame).
-  if (d.first == estimatedFirst_ && d.last == estimatedLast_ && d.format == estimatedFormat_) return;
-  estimatedFirst_ = d.first, estimatedLast_ = d.last, estimatedFormat_ = d.format;
+  if (d.first == estimatedFirst_ && d.last == estimatedLast_ && d.every == estimatedEvery_ &&
+      d.format == estimatedFormat_)
+    return;
+  estimatedFirst_ = d.first, estimatedLast_ = d.last, estimatedEvery_ = d.every;
+  estimatedFormat_ = d.format;
   try {
-    const TakeSurface surface(take, FrameRange{static_cast<uint32_t>(d.first - 1),
-                                               static_cast<uint32_t>(d.last - d.first + 1)});
+    const TakeSurface surface(take, exportRange(d), static_cast<uint32_t>(d.every));
     d.estimateBytes = estimateExportBytes(surface, exportFormatAt(d.format));
   } catch (const std::exception& error) {
     d.estimateBytes = 0;
@@ -232,8 +239,8 @@ bool SculptApp::startExport() {
   }
   TakeExportOptions options;
   options.keyTolerance = d.keyTolerance;
-  const FrameRange range{static_cast<uint32_t>(d.first - 1), static_cast<uint32_t>(d.last - d.first + 1)};
-  if (!export_->start(take, range, std::string(d.path.data()), exportFormatAt(d.format), options))
+  if (!export_->start(take, exportRange(d), static_cast<uint32_t>(d.every),
+                      std::string(d.path.data()), exportFormatAt(d.format), options))
     return false;
   d.running = true;
   d.fraction = 0.0;

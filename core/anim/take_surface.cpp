@@ -6,24 +6,29 @@
 
 namespace sculpt {
 
-TakeSurface::TakeSurface(std::shared_ptr<const Take> take, FrameRange range,
+TakeSurface::TakeSurface(std::shared_ptr<const Take> take, FrameRange range, uint32_t every,
                          InterpolationMethod method)
-    : take_(std::move(take)), range_(range), method_(method) {
+    : take_(std::move(take)), range_(range), every_(every), method_(method) {
   const uint32_t frames = take_ ? take_->frameCount() : 0;
   if (frames == 0) throw std::invalid_argument("the take has no frames");
+  if (every_ == 0) throw std::invalid_argument("every 0th frame is no frame rate");
   if (range_.count == 0 && range_.first < frames) range_.count = frames - range_.first;
   if (range_.first >= frames || range_.count > frames - range_.first)
     throw std::invalid_argument("frames " + std::to_string(range_.first + 1) + " to " +
                                 std::to_string(range_.first + range_.count) +
                                 " are not in the take of " + std::to_string(frames) + " frames");
+  const auto shownFrom = [this](uint32_t takeFrame) {  // the first shown frame at or after it
+    return (takeFrame - range_.first + every_ - 1) / every_;
+  };
+  frames_ = shownFrom(range_.first + range_.count);
   const uint32_t end = range_.first + range_.count;
   for (const TakeSegment& s : take_->segments()) {
-    const uint32_t first = std::max(s.frames.first, range_.first);
-    const uint32_t last = std::min(s.frames.first + s.frames.count, end);
+    const uint32_t first = shownFrom(std::max(s.frames.first, range_.first));
+    const uint32_t last = shownFrom(std::max(std::min(s.frames.first + s.frames.count, end), range_.first));
     if (first >= last) continue;
     Segment segment;
     segment.surface = s.surface;
-    segment.frames = {first - range_.first, last - first};
+    segment.frames = {first, last - first};
     const SceneGeometry& g = s.surface->geometry();
     if (!g.surface) throw std::logic_error("the recorded scene has no surface");
     segment.restNormals.resize(3 * static_cast<size_t>(g.restNormals.rows()));
@@ -59,7 +64,7 @@ uint32_t TakeSurface::maxVertices() const {
 }
 
 const TakeSurface::Segment& TakeSurface::segmentFor(uint32_t frame) const {
-  if (frame >= range_.count) throw std::out_of_range("frame " + std::to_string(frame) + " is not in the take");
+  if (frame >= frames_) throw std::out_of_range("frame " + std::to_string(frame) + " is not in the take");
   return segments_[segmentOf(frame)];
 }
 
@@ -84,7 +89,7 @@ void toFloats(const Points& values, std::vector<float>& out) {
 
 void TakeSurface::evaluateSurface(uint32_t frame, SurfaceFrameData& out) const {
   const Segment& segment = segmentFor(frame);
-  take_->controlPoints(range_.first + frame, control_);
+  take_->controlPoints(takeFrame(frame), control_);
   segment.surface->cellNodes(control_, nodes_);
   EmbeddedDeformer& d = deformer(segment);
   d.setFrame(nodes_, method_);
@@ -104,10 +109,10 @@ void TakeSurface::evaluateSurface(uint32_t frame, SurfaceFrameData& out) const {
 
 void TakeSurface::evaluateSolid(uint32_t frame, SolidFrameData& out) const {
   const Segment& segment = segmentFor(frame);
-  take_->controlPoints(range_.first + frame, control_);
+  take_->controlPoints(takeFrame(frame), control_);
   segment.surface->cellNodes(control_, out.nodes);
   out.displacement = out.nodes - segment.surface->geometry().cellMesh.positions;
-  if (const CellFields* fields = take_->fieldsAt(range_.first + frame))
+  if (const CellFields* fields = take_->fieldsAt(takeFrame(frame)))
     out.fields = *fields;
   else
     out.fields = CellFields{};

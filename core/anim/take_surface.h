@@ -2,7 +2,7 @@
 // A take (take.h) as an AnimatedSurface: the frames' control points turned into the embedded
 // surface with the CPU Phong deformation (embed/embedded_deformer.h, the reference the GPU
 // deformer is tested against) and into the level-K solid (scene/scene_surface_map.h), on demand,
-// optionally over a range of the take's frames.
+// optionally over a range of the take's frames and at a fraction of its frame rate.
 
 #include <memory>
 #include <optional>
@@ -17,14 +17,16 @@ namespace sculpt {
 
 class TakeSurface : public AnimatedSurface {
  public:
-  /// Frames [range.first, range.first + range.count) of `take` (count 0: to the end). Throws
-  /// std::invalid_argument for an empty take or a range outside it.
-  explicit TakeSurface(std::shared_ptr<const Take> take, FrameRange range = {},
+  /// Frames [range.first, range.first + range.count) of `take` (count 0: to the end), every
+  /// `every`-th of them from the first (its frame f is the take's range.first + f x every, at
+  /// the take's fps / every). Throws std::invalid_argument for an empty take, a range outside
+  /// it or every = 0.
+  explicit TakeSurface(std::shared_ptr<const Take> take, FrameRange range = {}, uint32_t every = 1,
                        InterpolationMethod method = InterpolationMethod::Phong);
   ~TakeSurface() override;
 
-  double fps() const override { return take_->fps(); }
-  uint32_t frameCount() const override { return range_.count; }
+  double fps() const override { return take_->fps() / every_; }
+  uint32_t frameCount() const override { return frames_; }
   uint32_t segmentCount() const override { return static_cast<uint32_t>(segments_.size()); }
   FrameRange segment(uint32_t s) const override { return segments_[s].frames; }
   const SurfaceMesh& restSurface(uint32_t s) const override;
@@ -47,10 +49,12 @@ class TakeSurface : public AnimatedSurface {
     mutable std::unique_ptr<EmbeddedDeformer> deformer;  // made on first use
   };
   const Segment& segmentFor(uint32_t frame) const;
+  uint32_t takeFrame(uint32_t frame) const { return range_.first + frame * every_; }
   EmbeddedDeformer& deformer(const Segment& segment) const;
 
   std::shared_ptr<const Take> take_;
-  FrameRange range_;
+  FrameRange range_;  // of the take's frames
+  uint32_t every_ = 1, frames_ = 0;
   InterpolationMethod method_;
   std::vector<Segment> segments_;
   mutable Points control_, nodes_;

@@ -11,6 +11,8 @@
 #include <chrono>
 #include <cstdio>
 #include <cstdlib>
+#include <cstring>
+#include <fstream>
 #include <filesystem>
 #include <string>
 #include <vector>
@@ -175,6 +177,28 @@ TEST(RecordWindow, RecordsScrubsAndExportsWithoutStallingTheWindow) {
       EXPECT_LE(times->max(), 2.0 * median) << name << ": " << all;
     }
     EXPECT_GE(written.ms.size(), 3u) << "the export ran over several frames";
+
+    // Every other frame of the take, as a point cache: half the frames, the same file layout.
+    dialog.every = 2;
+    const std::string pc2 = (folder / "half.pc2").string();
+    std::snprintf(dialog.path.data(), dialog.path.size(), "%s", pc2.c_str());
+    app.headlessFrame();
+    ASSERT_TRUE(app.startExport());
+    for (int k = 0; k < 20000 && app.exportJob().busy(); ++k) app.headlessFrame();
+    ASSERT_TRUE(app.lastExport().has_value());
+    ASSERT_EQ(app.lastExport()->kind, ExportJob::Outcome::Kind::Written) << app.lastExport()->error;
+    const uint32_t half = (take->frameCount() - 1) / 2 + 1;
+    EXPECT_EQ(app.lastExport()->result.frames, half);
+    std::ifstream cache(pc2, std::ios::binary);
+    char header[32];
+    ASSERT_TRUE(cache.read(header, sizeof header));
+    int32_t points = 0, samples = 0;
+    std::memcpy(&points, header + 16, 4);
+    std::memcpy(&samples, header + 28, 4);
+    EXPECT_EQ(static_cast<uint32_t>(samples), half);
+    EXPECT_EQ(fs::file_size(pc2), 32u + 12u * static_cast<uint64_t>(points) * half);
+    dialog.every = 1;
+    std::snprintf(dialog.path.data(), dialog.path.size(), "%s", glb.c_str());
 
     // The window with the timeline at frame 10, the dialog and the toast.
     const char* images = std::getenv("SCULPT_SESSION_IMAGES");
