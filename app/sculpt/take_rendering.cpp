@@ -3,8 +3,6 @@
 // geometry formats through anim/take_export.h, and name_####.png / name.mp4 by playing each
 // frame back and rendering it offscreen as the headless screenshot does.
 
-#include "sculpt/take_rendering.h"
-
 #include <cmath>
 #include <cstdio>
 #include <iostream>
@@ -18,23 +16,10 @@
 #include "render/offscreen_target.h"
 #include "render/png_image.h"
 #include "sculpt/sculpt_app.h"
-#include "sculpt/video_encoder.h"
+#include "sculpt/rendered_frames.h"
 #include "util/shell_command.h"
 
 namespace sculpt::app {
-
-std::filesystem::path sequenceFrameName(const std::filesystem::path& pattern, uint32_t number) {
-  std::string name = pattern.filename().string();
-  const size_t end = name.find_last_of('#');
-  if (end == std::string::npos) return pattern;
-  size_t begin = end;
-  while (begin > 0 && name[begin - 1] == '#') --begin;
-  std::string digits = std::to_string(number);
-  const size_t width = end - begin + 1;
-  if (digits.size() < width) digits.insert(0, width - digits.size(), '0');
-  name.replace(begin, width, digits);
-  return pattern.parent_path() / name;
-}
 
 namespace {
 
@@ -149,20 +134,7 @@ uint64_t SculptApp::renderTake(const std::vector<std::filesystem::path>& pngs,
   render::OffscreenTarget target(width, height);
   ScreenshotSettings settings = model_.screenshot;
   settings.includePanels = !options_.noUi;
-  // Frames written so far go again when a later one fails: no partial sequence is left.
-  std::vector<std::filesystem::path> written;
-  bool complete = false;
-  struct Cleanup {
-    const std::vector<std::filesystem::path>& files;
-    const bool& complete;
-    ~Cleanup() {
-      std::error_code ignored;
-      if (!complete)
-        for (const std::filesystem::path& file : files) std::filesystem::remove(file, ignored);
-    }
-  } cleanup{written, complete};
-  std::vector<std::unique_ptr<VideoEncoder>> encoders;
-  uint64_t bytes = 0;
+  RenderedFrames out(pngs, videos, recording_->take()->fps());  // removed unless finished
   int shownTenth = -1;
   leaveLive();  // the simulation pauses; the view shows the take's frames
   for (uint32_t k = 0; k < frames; ++k) {
@@ -175,33 +147,14 @@ uint64_t SculptApp::renderTake(const std::vector<std::filesystem::path>& pngs,
     glFinish();
     int w = 0, h = 0;
     const std::vector<uint8_t> pixels = captureFrame(settings, w, h);
-    for (const std::filesystem::path& pattern : pngs) {
-      const std::filesystem::path file = sequenceFrameName(pattern, k + 1);
-      if (file.has_parent_path()) std::filesystem::create_directories(file.parent_path());
-      render::writePng(file, w, h, pixels);
-      written.push_back(file);
-      bytes += std::filesystem::file_size(file);
-    }
-    if (encoders.empty())
-      for (const std::filesystem::path& video : videos)  // yuv420p: even sizes
-        encoders.push_back(std::make_unique<VideoEncoder>(video, w & ~1, h & ~1, recording_->take()->fps()));
-    if (!encoders.empty()) {
-      const int ew = encoders.front()->width(), eh = encoders.front()->height();
-      std::vector<uint8_t> cropped(static_cast<size_t>(ew) * eh * 4);
-      for (int y = 0; y < eh; ++y)
-        std::copy_n(pixels.begin() + static_cast<std::ptrdiff_t>(4 * static_cast<size_t>(y) * w),
-                    4 * ew, cropped.begin() + static_cast<std::ptrdiff_t>(4 * static_cast<size_t>(y) * ew));
-      for (const auto& encoder : encoders) encoder->write(cropped);
-    }
+    out.write(k + 1, pixels, w, h);
     const int tenth = static_cast<int>(10 * (k + 1) / frames);
     if (tenth > shownTenth) {
       shownTenth = tenth;
       std::fprintf(stderr, "rendering: %u of %u frames\n", k + 1, frames);
     }
   }
-  for (const auto& encoder : encoders) bytes += encoder->finish();
-  complete = true;
-  return bytes;
+  return out.finish();
 }
 
 }  // namespace sculpt::app
