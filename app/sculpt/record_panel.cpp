@@ -12,9 +12,10 @@ namespace {
 
 constexpr std::array<ExportFormat, kExportFormatCount> kFormats{
     ExportFormat::Glb,         ExportFormat::Pc2,         ExportFormat::Mdd,
-    ExportFormat::ObjSequence, ExportFormat::VtkSequence, ExportFormat::VtuSequence};
+    ExportFormat::ObjSequence, ExportFormat::VtkSequence, ExportFormat::VtuSequence,
+    ExportFormat::PngSequence, ExportFormat::Mp4};
 constexpr std::array<const char*, kExportFormatCount> kSuffixes{
-    ".glb", ".pc2", ".mdd", "_####.obj", "_####.vtk", "_####.vtu"};
+    ".glb", ".pc2", ".mdd", "_####.obj", "_####.vtk", "_####.vtu", "_####.png", ".mp4"};
 
 float scaled(float pixels) { return pixels * ImGui::GetFontSize() / 13.0f; }
 
@@ -69,7 +70,8 @@ void drawTimelineMarks(const RecordStatus& s, int lastFrame) {
 
 const char* const kExportFormatLabels[kExportFormatCount] = {
     "glTF morph animation (.glb)", "Blender point cache (.pc2)", "LightWave point cache (.mdd)",
-    "OBJ sequence (name_####.obj)", "VTK sequence (name_####.vtk)", "VTU + PVD (name_####.vtu)"};
+    "OBJ sequence (name_####.obj)", "VTK sequence (name_####.vtk)", "VTU + PVD (name_####.vtu)",
+    "PNG frames of the view (name_####.png)", "H.264 video of the view (.mp4)"};
 
 ExportFormat exportFormatAt(int index) { return kFormats[static_cast<size_t>(std::clamp(index, 0, kExportFormatCount - 1))]; }
 const char* exportSuffix(int index) { return kSuffixes[static_cast<size_t>(std::clamp(index, 0, kExportFormatCount - 1))]; }
@@ -206,7 +208,9 @@ void drawExportDialog(AppModel& m) {
   if (!d.problem.empty()) ImGui::TextColored(ImVec4(1.0f, 0.45f, 0.4f, 1.0f), "%s", d.problem.c_str());
   if (d.running) {
     ImGui::ProgressBar(static_cast<float>(d.fraction), ImVec2(scaled(420), 0));
-    if (m.status.playing)  // the export only takes cores the simulation and the view leave
+    if (d.rendering)
+      ImGui::TextDisabled("The view shows each frame as it is rendered.");
+    else if (m.status.playing)  // the export only takes cores the simulation and the view leave
       ImGui::TextDisabled("The simulation is running: pause it for a faster export.");
     if (ImGui::Button("Cancel")) r.cancelExport = true;
   } else {

@@ -10,8 +10,8 @@
 
 namespace sculpt::app {
 
-/// The geometry formats the export dialog offers, in its combo's order.
-inline constexpr int kExportFormatCount = 6;
+/// The formats the export dialog offers, in its combo's order: geometry, then rendered frames.
+inline constexpr int kExportFormatCount = 8;
 extern const char* const kExportFormatLabels[kExportFormatCount];
 
 struct RecordRequests {
@@ -55,6 +55,7 @@ struct ExportDialog {
   std::string problem;        ///< why Export is not allowed now; empty: it is
   uint64_t estimateBytes = 0;
   bool running = false;
+  bool rendering = false;  ///< a PNG or video export: the view plays the frames it renders
   double fraction = 0.0;
 };
 

@@ -536,6 +536,7 @@ void SculptApp::frame(int fbWidth, int fbHeight, bool interactive) {
   if (!options_.noUi) ImGui_ImplOpenGL3_RenderDrawData(ImGui::GetDrawData());
   lastFbWidth_ = fbWidth, lastFbHeight_ = fbHeight;
   carryOutRequests();
+  renderExportFrame();
   if (view_.hasGeometry() && !firstFrameReported_) reportFirstFrame();
 }
 

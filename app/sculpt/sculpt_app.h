@@ -21,6 +21,7 @@
 #include "sculpt/app_model.h"
 #include "sculpt/export_job.h"
 #include "sculpt/recording.h"
+#include "sculpt/rendered_frames.h"
 #include "scene/document.h"
 #include "sculpt/navigation.h"
 #include "sculpt/options.h"
@@ -74,10 +75,13 @@ class SculptApp {
   StylusDevice& stylus() { return stylus_; }
   /// The recording and its timeline (the bottom strip's Record, playhead and Live).
   Recording& recording() { return *recording_; }
-  /// What the export dialog's Export button does: exports the take as model().exportDialog says
-  /// on a worker thread. False (with a toast) when it cannot start.
+  /// What the export dialog's Export button does: exports the take as model().exportDialog says,
+  /// geometry on a worker thread, PNG frames and video one frame per window frame (the view
+  /// plays the take as it renders). False (with a toast) when it cannot start.
   bool startExport();
   ExportJob& exportJob() { return *export_; }
+  /// An export started and not yet finished, of either kind.
+  bool exporting() const { return export_->busy() || rendered_.has_value(); }
   /// The last export that finished (written, failed or cancelled).
   const std::optional<ExportJob::Outcome>& lastExport() const { return lastExport_; }
 
@@ -217,6 +221,17 @@ class SculptApp {
   std::unique_ptr<Recording> recording_ = std::make_unique<Recording>();
   std::unique_ptr<ExportJob> export_ = std::make_unique<ExportJob>();
   std::optional<ExportJob::Outcome> lastExport_;
+  /// A PNG or video export in progress: take frame range.first + k x every is rendered on the
+  /// k-th window frame after the start.
+  struct RenderedExport {
+    std::unique_ptr<RenderedFrames> out;
+    std::filesystem::path path;
+    FrameRange range;
+    uint32_t every = 1, count = 0, next = 0;
+  };
+  std::optional<RenderedExport> rendered_;
+  void renderExportFrame();  ///< after a frame is drawn: the shown take frame to the export
+  void finishExport(ExportJob::Outcome outcome);  ///< its toast; kept as lastExport()
   bool resumePlaying_ = false;  ///< the simulation played when the playhead left Live
   std::shared_ptr<const SceneGeometry> liveGeometry_;  ///< the controller's newest scene
   const Take* shownTake_ = nullptr;  ///< the take the view shows a frame of (null: live)

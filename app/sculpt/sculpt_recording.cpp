@@ -12,6 +12,7 @@
 #include "sculpt/app_clock.h"
 #include "sculpt/record_panel.h"
 #include "sculpt/sculpt_app.h"
+#include "util/shell_command.h"
 
 namespace sculpt::app {
 namespace {
@@ -50,7 +51,10 @@ void SculptApp::goLive() {
 
 void SculptApp::carryOutRecordRequests(const RecordRequests& r) {
   const Recording::Clock::time_point now = Recording::Clock::now();
-  if (r.toggleRecord) {
+  // A rendered export drives the playhead until it ends: the timeline waits.
+  const bool rendering = rendered_.has_value();
+  if (r.toggleRecord && rendering) model_.toast("an export is rendering: wait for it or cancel it", true);
+  if (r.toggleRecord && !rendering) {
     sceneChanged_ = true;
     if (recording_->recording()) {
       recording_->stop();
@@ -66,7 +70,7 @@ void SculptApp::carryOutRecordRequests(const RecordRequests& r) {
       }
     }
   }
-  const bool reviewable = !recording_->recording() && recording_->take();
+  const bool reviewable = !rendering && !recording_->recording() && recording_->take();
   if (reviewable && r.playhead) {
     leaveLive();
     recording_->setPlayhead(*r.playhead);
@@ -79,9 +83,16 @@ void SculptApp::carryOutRecordRequests(const RecordRequests& r) {
       recording_->play(now);
     }
   }
-  if (r.goLive) goLive();
+  if (r.goLive && !rendering) goLive();
   if (r.startExport) startExport();
-  if (r.cancelExport) export_->cancel();
+  if (r.cancelExport && rendering) {
+    rendered_.reset();  // removes the frames written so far
+    ExportJob::Outcome cancelled;
+    cancelled.kind = ExportJob::Outcome::Kind::Cancelled;
+    finishExport(std::move(cancelled));
+  } else if (r.cancelExport) {
+    export_->cancel();
+  }
   if (r.saveScript) {
     // Beside the export path: take.glb -> take_script.json, for sculpt-cli record --script.
     std::filesystem::path path(model_.exportDialog.path.data());
@@ -141,7 +152,7 @@ void SculptApp::publishRecordStatus() {
   for (const ScriptEvent& event : strokes.events)
     s.marks.push_back({event.time, event.endTime(), event.typeName()});
   s.strokes = strokes.events.size();
-  if (s.recording || s.playingBack) sceneChanged_ = true;  // keep drawing while the figures move
+  if (s.recording || s.playingBack || rendered_) sceneChanged_ = true;  // keep drawing meanwhile
 }
 
 void SculptApp::updateRecording() {
@@ -153,20 +164,50 @@ void SculptApp::updateRecording() {
   showPlayhead();
   publishRecordStatus();
 
-  if (std::optional<ExportJob::Outcome> outcome = export_->poll()) {
-    switch (outcome->kind) {
-      case ExportJob::Outcome::Kind::Written:
-        model_.toast("wrote " + exportedFiles(*outcome) + " (" + byteSize(outcome->result.bytes) + ")",
-                     false, 8.0);
-        break;
-      case ExportJob::Outcome::Kind::Failed: model_.toast(outcome->error, true, 10.0); break;
-      case ExportJob::Outcome::Kind::Cancelled:
-        model_.toast("Export cancelled; nothing was written");
-        break;
-    }
-    lastExport_ = std::move(outcome);
-  }
+  if (std::optional<ExportJob::Outcome> outcome = export_->poll()) finishExport(std::move(*outcome));
   updateExportDialog();
+}
+
+void SculptApp::finishExport(ExportJob::Outcome outcome) {
+  switch (outcome.kind) {
+    case ExportJob::Outcome::Kind::Written:
+      model_.toast("wrote " + exportedFiles(outcome) + " (" + byteSize(outcome.result.bytes) + ")",
+                   false, 8.0);
+      break;
+    case ExportJob::Outcome::Kind::Failed: model_.toast(outcome.error, true, 10.0); break;
+    case ExportJob::Outcome::Kind::Cancelled:
+      model_.toast("Export cancelled; nothing was written");
+      break;
+  }
+  lastExport_ = std::move(outcome);
+}
+
+void SculptApp::renderExportFrame() {
+  if (!rendered_ || recording_->playhead() != rendered_->range.first + rendered_->next * rendered_->every)
+    return;
+  RenderedExport& r = *rendered_;
+  ExportJob::Outcome outcome;
+  outcome.path = r.path;
+  try {
+    // The 3D view alone, as a screenshot without panels takes it.
+    ScreenshotSettings settings = model_.screenshot;
+    settings.includePanels = false;
+    int width = 0, height = 0;
+    const std::vector<uint8_t> pixels = captureFrame(settings, width, height);
+    r.out->write(++r.next, pixels, width, height);
+    if (r.next < r.count) {
+      recording_->setPlayhead(r.range.first + r.next * r.every);  // the next window frame's
+      return;
+    }
+    outcome.result.frames = r.count;
+    outcome.result.bytes = r.out->finish();
+    outcome.result.files = r.out->files();
+  } catch (const std::exception& error) {
+    outcome.kind = ExportJob::Outcome::Kind::Failed;
+    outcome.error = r.path.string() + ": " + error.what();
+  }
+  rendered_.reset();  // a failed export's files go with it
+  finishExport(std::move(outcome));
 }
 
 std::string SculptApp::defaultExportPath() const {
@@ -179,8 +220,9 @@ std::string SculptApp::defaultExportPath() const {
 
 void SculptApp::updateExportDialog() {
   ExportDialog& d = model_.exportDialog;
-  d.running = export_->busy();
-  d.fraction = export_->fraction();
+  d.running = exporting();
+  d.rendering = rendered_.has_value();
+  d.fraction = rendered_ ? static_cast<double>(rendered_->next) / rendered_->count : export_->fraction();
   const std::shared_ptr<const Take>& take = recording_->take();
   if (d.path[0] == 0) copyTo(d.path, withExportSuffix(defaultExportPath(), d.format));
   if (take.get() != dialogTake_) {  // a new take: all of it
@@ -193,17 +235,15 @@ void SculptApp::updateExportDialog() {
   const std::string path(d.path.data());
   const ExportTarget target = exportTargetFor(path);
   d.problem = target.problem;
-  if (d.problem.empty() && target.format) {
-    if (isRenderedFormat(*target.format))
-      d.problem = "PNG sequences and MP4 video are rendered by sculpt --headless --record-out";
-    else
-      d.format = exportFormatIndex(*target.format);  // the name decides the format
-  }
+  if (d.problem.empty() && target.format)
+    d.format = exportFormatIndex(*target.format);  // the name decides the format
   const std::filesystem::path parent = std::filesystem::path(path).parent_path();
   std::error_code ignored;
   if (d.problem.empty() && !parent.empty() && !std::filesystem::is_directory(parent, ignored))
     d.problem = "the folder " + parent.string() + " does not exist";
   if (!take && d.problem.empty()) d.problem = "nothing recorded yet";
+  if (d.problem.empty() && exportFormatAt(d.format) == ExportFormat::Mp4 && !programOnPath("ffmpeg"))
+    d.problem = "writing .mp4 needs the ffmpeg program (scripts/install-deps.sh installs it)";
   if (!take || d.running) return;
   // The estimate, once per range and format (a TakeSurface is cheap, but not free every frame).
   if (d.first == estimatedFirst_ && d.last == estimatedLast_ && d.every == estimatedEvery_ &&
@@ -229,7 +269,7 @@ bool SculptApp::startExport() {
   d.show = shown;
   const std::shared_ptr<const Take>& take = recording_->take();
   std::string refusal;
-  if (export_->busy())
+  if (exporting())
     refusal = "an export is running already: wait for it or cancel it";
   else if (!d.problem.empty())
     refusal = d.problem;
@@ -237,10 +277,32 @@ bool SculptApp::startExport() {
     model_.toast(refusal.empty() ? "nothing recorded yet" : refusal, true, 8.0);
     return false;
   }
+  const ExportFormat format = exportFormatAt(d.format);
+  if (isRenderedFormat(format)) {
+    RenderedExport r;
+    r.path = std::string(d.path.data());
+    r.range = exportRange(d);
+    r.every = static_cast<uint32_t>(d.every);
+    r.count = (r.range.count - 1) / r.every + 1;
+    try {
+      std::vector<std::filesystem::path> pngs, videos;
+      (format == ExportFormat::Mp4 ? videos : pngs).push_back(r.path);
+      r.out = std::make_unique<RenderedFrames>(pngs, videos, take->fps() / r.every);
+    } catch (const std::exception& error) {
+      model_.toast(error.what(), true, 8.0);
+      return false;
+    }
+    leaveLive();
+    recording_->setPlayhead(r.range.first);
+    rendered_ = std::move(r);
+    d.running = true;
+    d.fraction = 0.0;
+    return true;
+  }
   TakeExportOptions options;
   options.keyTolerance = d.keyTolerance;
   if (!export_->start(take, exportRange(d), static_cast<uint32_t>(d.every),
-                      std::string(d.path.data()), exportFormatAt(d.format), options))
+                      std::string(d.path.data()), format, options))
     return false;
   d.running = true;
   d.fraction = 0.0;

@@ -197,7 +197,58 @@ TEST(RecordWindow, RecordsScrubsAndExportsWithoutStallingTheWindow) {
     std::memcpy(&samples, header + 28, 4);
     EXPECT_EQ(static_cast<uint32_t>(samples), half);
     EXPECT_EQ(fs::file_size(pc2), 32u + 12u * static_cast<uint64_t>(points) * half);
+
+    // The view's frames as PNG files (every 20th: 4 frames) and as an H.264 video (every 10th),
+    // rendered one per window frame; a PNG export cancelled after two frames leaves none.
+    const fs::path rendered = folder / "rendered";
+    fs::create_directories(rendered);
+    const auto exportTo = [&](const fs::path& path, int every, int maxFrames) {
+      dialog.every = every;
+      dialog.format = 0;  // the name decides the format
+      std::snprintf(dialog.path.data(), dialog.path.size(), "%s", path.c_str());
+      app.headlessFrame();
+      if (!app.startExport()) return false;
+      for (int k = 0; k < maxFrames && app.exporting(); ++k) app.headlessFrame();
+      return true;
+    };
+    ASSERT_TRUE(exportTo(rendered / "cancel_####.png", 20, 2));
+    EXPECT_TRUE(app.exporting());
+    EXPECT_TRUE(dialog.rendering);
+    app.model().requests.record.cancelExport = true;
+    app.headlessFrame();
+    EXPECT_FALSE(app.exporting());
+    EXPECT_EQ(app.lastExport()->kind, ExportJob::Outcome::Kind::Cancelled);
+    EXPECT_TRUE(filesIn(rendered).empty()) << "left behind: " << filesIn(rendered).front();
+    ASSERT_TRUE(exportTo(rendered / "view_####.png", 20, 100));
+    ASSERT_EQ(app.lastExport()->kind, ExportJob::Outcome::Kind::Written) << app.lastExport()->error;
+    const uint32_t pngFrames = (take->frameCount() - 1) / 20 + 1;
+    EXPECT_EQ(app.lastExport()->result.frames, pngFrames);
+    EXPECT_EQ(filesIn(rendered).size(), pngFrames);
+    for (uint32_t f = 1; f <= pngFrames; ++f) {
+      char name[32];
+      std::snprintf(name, sizeof name, "view_%04u.png", f);
+      EXPECT_GT(fs::file_size(rendered / name), 1000u) << name;
+    }
+    if (const char* images = std::getenv("SCULPT_SESSION_IMAGES"))
+      fs::copy_file(rendered / "view_0002.png", fs::path(images) / "record-view-frame-21.png",
+                    fs::copy_options::overwrite_existing);
+    const ViewRect view = app.viewRect();
+    ASSERT_TRUE(exportTo(rendered / "view.mp4", 10, 100));
+    ASSERT_EQ(app.lastExport()->kind, ExportJob::Outcome::Kind::Written) << app.lastExport()->error;
+    const std::string probe = "ffprobe -v error -select_streams v:0 -count_frames -show_entries "
+                              "stream=codec_name,width,height,pix_fmt,nb_read_frames -of csv=p=0 " +
+                              (rendered / "view.mp4").string() + " > " + (rendered / "probe.txt").string();
+    ASSERT_EQ(std::system(probe.c_str()), 0) << "ffprobe is missing: scripts/install-deps.sh installs ffmpeg";
+    std::ifstream probed(rendered / "probe.txt");
+    std::string streams;
+    std::getline(probed, streams);
+    const int w = static_cast<int>(view.max.x - view.min.x) & ~1, h = static_cast<int>(view.max.y - view.min.y) & ~1;
+    EXPECT_EQ(streams, "h264," + std::to_string(w) + "," + std::to_string(h) + ",yuv420p," +
+                           std::to_string((take->frameCount() - 1) / 10 + 1));
+    std::printf("[ measured ] rendered: %u PNG frames, video %s\n", pngFrames, streams.c_str());
+    EXPECT_FALSE(app.recording().isLive());
     dialog.every = 1;
+    dialog.format = 0;
     std::snprintf(dialog.path.data(), dialog.path.size(), "%s", glb.c_str());
 
     // The window with the timeline at frame 10, the dialog and the toast.
