@@ -19,11 +19,6 @@ constexpr std::array<const char*, kExportFormatCount> kSuffixes{
 
 float scaled(float pixels) { return pixels * ImGui::GetFontSize() / 13.0f; }
 
-void copyTo(std::array<char, 1024>& buffer, const std::string& text) {
-  const size_t n = std::min(text.size(), buffer.size() - 1);
-  std::copy_n(text.begin(), n, buffer.begin());
-  buffer[n] = 0;
-}
 
 ImU32 markColour(const char* type) {
   const std::string t(type);
@@ -76,6 +71,12 @@ const char* const kExportFormatLabels[kExportFormatCount] = {
 ExportFormat exportFormatAt(int index) { return kFormats[static_cast<size_t>(std::clamp(index, 0, kExportFormatCount - 1))]; }
 const char* exportSuffix(int index) { return kSuffixes[static_cast<size_t>(std::clamp(index, 0, kExportFormatCount - 1))]; }
 
+void setExportPath(ExportDialog& dialog, const std::string& path) {
+  const size_t n = std::min(path.size(), dialog.path.size() - 1);
+  std::copy_n(path.begin(), n, dialog.path.begin());
+  dialog.path[n] = 0;
+}
+
 int exportFormatIndex(ExportFormat format) {
   const auto it = std::find(kFormats.begin(), kFormats.end(), format);
   return it == kFormats.end() ? 0 : static_cast<int>(it - kFormats.begin());
@@ -125,6 +126,8 @@ void drawRecordStrip(AppModel& m) {
                 byteSize(s.bytes).c_str(), s.strokes);
     return;
   }
+  // A rendered export drives the playhead: the row waits for it.
+  ImGui::BeginDisabled(m.exportDialog.rendering);
   if (ImGui::Button("Record", ImVec2(scaled(64), 0))) r.toggleRecord = true;
   if (ImGui::IsItemHovered()) ImGui::SetTooltip("Record the running simulation (R)");
   ImGui::SameLine();
@@ -161,6 +164,7 @@ void drawRecordStrip(AppModel& m) {
   ImGui::SameLine();
   ImGui::TextUnformatted(info.c_str());
   ImGui::EndDisabled();
+  ImGui::EndDisabled();
 }
 
 void drawExportDialog(AppModel& m) {
@@ -178,7 +182,7 @@ void drawExportDialog(AppModel& m) {
   ImGui::BeginDisabled(d.running);
   ImGui::SetNextItemWidth(scaled(420));
   if (ImGui::Combo("Format", &d.format, kExportFormatLabels, kExportFormatCount))
-    copyTo(d.path, withExportSuffix(std::string(d.path.data()), d.format));
+    setExportPath(d, withExportSuffix(std::string(d.path.data()), d.format));
   ImGui::SetNextItemWidth(scaled(420));
   ImGui::InputText("File", d.path.data(), d.path.size());
   const int frames = static_cast<int>(std::max<uint32_t>(m.record.frames, 1));

@@ -1,7 +1,7 @@
 #pragma once
 // The recording's part of the window: Record / Stop with the take's length, and the timeline
 // (playhead slider, Play / Pause of the take, Live) in the bottom strip; the export dialog
-// (format, file, frame range, glTF key tolerance, size estimate, progress with Cancel).
+// (format, file, frame range and rate, glTF key tolerance, size estimate, progress with Cancel).
 
 #include <string>
 
@@ -18,8 +18,10 @@ void drawExportDialog(AppModel& model);
 /// The dialog's format at combo index `index`, and the name ending that asks for it.
 ExportFormat exportFormatAt(int index);
 const char* exportSuffix(int index);
-/// The combo index of a format (0, glTF, for the rendered ones).
+/// The combo index of a format.
 int exportFormatIndex(ExportFormat format);
+/// The dialog's path field set to `path` (cut at the field's capacity).
+void setExportPath(ExportDialog& dialog, const std::string& path);
 /// `path` with its format's ending replaced by that of `index` ("a/x_take.glb" -> "a/x_take_####.obj").
 std::string withExportSuffix(const std::string& path, int index);
 

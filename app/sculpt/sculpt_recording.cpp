@@ -17,12 +17,6 @@
 namespace sculpt::app {
 namespace {
 
-void copyTo(std::array<char, 1024>& buffer, const std::string& text) {
-  const size_t n = std::min(text.size(), buffer.size() - 1);
-  std::copy_n(text.begin(), n, buffer.begin());
-  buffer[n] = 0;
-}
-
 std::string exportedFiles(const ExportJob::Outcome& outcome) {
   const std::vector<std::filesystem::path>& files = outcome.result.files;
   if (files.size() <= 1) return (files.empty() ? outcome.path : files.front()).string();
@@ -224,7 +218,7 @@ void SculptApp::updateExportDialog() {
   d.rendering = rendered_.has_value();
   d.fraction = rendered_ ? static_cast<double>(rendered_->next) / rendered_->count : export_->fraction();
   const std::shared_ptr<const Take>& take = recording_->take();
-  if (d.path[0] == 0) copyTo(d.path, withExportSuffix(defaultExportPath(), d.format));
+  if (d.path[0] == 0) setExportPath(d, withExportSuffix(defaultExportPath(), d.format));
   if (take.get() != dialogTake_) {  // a new take: all of it
     dialogTake_ = take.get();
     d.first = 1;

@@ -46,7 +46,7 @@ bool sharesTexcoordIndices(const SurfaceMesh& rest) {
 }
 
 std::string keyName(const std::string& name, size_t key) {
-  char digits[16];
+  char digits[24];  // any size_t
   std::snprintf(digits, sizeof digits, "%04zu", key + 1);
   return name + "_key_" + digits;
 }
