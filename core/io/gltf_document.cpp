@@ -22,10 +22,12 @@
 #include <map>
 #include <sstream>
 #include <string>
+#include <string_view>
 #include <vector>
 
 #include "io/atomic_file.h"
 #include "io/file_error.h"
+#include "io/json_nesting.h"
 
 namespace sculpt::gltf {
 
@@ -157,6 +159,10 @@ std::string firstLine(const std::string& text) {
 
 }  // namespace
 
+// Far deeper than any glTF's own structure needs (about 10) and far from what overflows the
+// parser's stack (tens of thousands of levels).
+constexpr int kMaxJsonNesting = 512;
+
 tinygltf::Model loadModel(const std::filesystem::path& path) {
   const std::string bytes = readFile(path);
   if (bytes.size() >= std::numeric_limits<uint32_t>::max()) {
@@ -164,6 +170,13 @@ tinygltf::Model loadModel(const std::filesystem::path& path) {
   }
   const bool binary = bytes.size() >= 4 && bytes.compare(0, 4, "glTF") == 0;
   const size_t length = binary ? checkGlbLayout(path, bytes) : bytes.size();
+  // tinygltf's JSON parser recurses once per level: a hostile file could overflow the stack.
+  const std::string_view json = binary ? std::string_view(bytes).substr(20, readLittleEndian32(bytes, 12))
+                                       : std::string_view(bytes);
+  if (const size_t at = excessiveJsonNesting(json, kMaxJsonNesting); at != std::string_view::npos)
+    fail(path, "",
+         "not valid glTF (its JSON nests deeper than " + std::to_string(kMaxJsonNesting) +
+             " levels, at byte " + std::to_string(binary ? at + 20 : at) + ")");
 
   tinygltf::TinyGLTF loader;
   loader.SetImageLoader(&keepImageUndecoded, nullptr);
