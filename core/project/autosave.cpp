@@ -38,6 +38,10 @@ bool Autosave::tick(const Project& project, bool dirty) {
   const double now = clock_();
   if (!dirty || now - lastWriteS_ < intervalS_) return false;
   lastWriteS_ = now;  // also after a failure: retry at the next interval, not every frame
+  // The recovery folder of a fresh configuration does not exist until the first autosave.
+  std::error_code ignored;  // a folder that cannot be made fails the save below, with its reason
+  if (recoveryPath_.has_parent_path())
+    std::filesystem::create_directories(recoveryPath_.parent_path(), ignored);
   saveProject(project, recoveryPath_);
   return true;
 }

@@ -124,5 +124,17 @@ TEST_F(DocumentTest, UntitledAutosavesInTheRecoveryFolderAndFailedSavesReport) {
   EXPECT_EQ(d.title(), "untitled *");
 }
 
+TEST_F(DocumentTest, AFreshConfigurationGetsItsRecoveryFolderAtTheFirstAutosave) {
+  const fs::path recoveryFolder = folder_ / "fresh-config" / "sculpt";
+  Document d(recoveryFolder, 60.0, [this] { return now_; });
+  d.start(block());
+  Project moved = d.project();
+  moved.controlMesh.positions(1, 1) += 0.5;
+  ASSERT_TRUE(d.commit("Move point", moved));
+  now_ = 100.0;
+  EXPECT_EQ(d.tick(), "") << "no 'autosave failed' on a configuration without its folder";
+  EXPECT_TRUE(fs::exists(recoveryFolder / "untitled.sculpt.recovery"));
+}
+
 }  // namespace
 }  // namespace sculpt
