@@ -163,6 +163,7 @@ void dialogs(AppModel& m) {
     ImGui::OpenPopup("Recover unsaved work?");
   ImGui::SetNextWindowPos(centre, ImGuiCond_Appearing, ImVec2(0.5f, 0.5f));
   if (ImGui::BeginPopupModal("Recover unsaved work?", nullptr, ImGuiWindowFlags_AlwaysAutoResize)) {
+    if (m.document.recoveryOffer.empty()) ImGui::CloseCurrentPopup();  // answered elsewhere
     ImGui::Text("The program did not close cleanly. Autosaved work was found:\n%s",
                 m.document.recoveryOffer.c_str());
     if (ImGui::Button("Recover")) {

@@ -345,7 +345,10 @@ void SculptApp::carryOutRequests() {
   if (r.screenshot || r.frameModel || r.frameAll || r.standardView || r.toggleOrthographic ||
       r.togglePlay || r.stepOnce || r.reset || r.applySettings || !r.loadScene.empty())
     sceneChanged_ = true;
-  if (r.quit) glfwSetWindowShouldClose(window_, 1);
+  if (r.quit) {
+    glfwSetWindowShouldClose(window_, 1);
+    askBeforeClosingUnsaved();  // the loop ends before the next frame could ask
+  }
   if (r.frameModel) frameModel(false);
   if (r.frameAll) frameModel(true);
   if (r.standardView) camera_.setStandardView(*r.standardView);

@@ -89,6 +89,8 @@ class SculptApp {
   /// Builds the UI and draws the scene into the bound framebuffer (fbWidth x fbHeight pixels).
   void frame(int fbWidth, int fbHeight, bool interactive);
   void syncScene();
+  /// Holds a close of the window with unsaved changes and shows the prompt instead.
+  void askBeforeClosingUnsaved();
   void handleInput(const ViewRect& view);
   // Tools (sculpt_tools.cpp)
   struct SurfaceHit {

@@ -174,11 +174,16 @@ void SculptApp::syncDocument() {
   const std::string title = "sculpt - " + d.title;
   if (title != lastTitle_ && !options_.headless) glfwSetWindowTitle(window_, title.c_str());
   lastTitle_ = title;
-  // The window is closing: ask about unsaved changes first (not when a test closes it).
+  askBeforeClosingUnsaved();
+}
+
+void SculptApp::askBeforeClosingUnsaved() {
+  // The window is closing (its close button, Ctrl+Q, File > Quit): ask about unsaved changes
+  // first (not when a test closes it).
   if (!options_.headless && glfwWindowShouldClose(window_) && document_.dirty() &&
       !closeConfirmed_ && options_.quitAfter <= 0.0) {
     glfwSetWindowShouldClose(window_, 0);
-    d.closePrompt = true;
+    model_.document.closePrompt = true;
   }
 }
 

@@ -420,6 +420,22 @@ TEST_F(SculptSession, WorkLeftByACrashIsOfferedAndRecovered) {
   }
   EXPECT_EQ(app_->sceneView().geometry()->controlMesh->numCells(), 27u) << "block3 is shown";
 
+  // Ctrl+Q (over the view) and File > Quit with unsaved changes ask too, and the window stays.
+  const ViewRect view = app_->viewRect();
+  pointer_.x = 0.5f * (view.min.x + view.max.x), pointer_.y = 0.5f * (view.min.y + view.max.y);
+  frames(1);
+  press(GLFW_KEY_Q, true);
+  EXPECT_TRUE(app_->model().document.closePrompt) << "Ctrl+Q asks";
+  EXPECT_FALSE(glfwWindowShouldClose(window_));
+  app_->model().document.closePrompt = false;
+  frames(1);
+  app_->model().requests.quit = true;  // the menu's Quit
+  frames(1);
+  EXPECT_TRUE(app_->model().document.closePrompt) << "File > Quit asks";
+  EXPECT_FALSE(glfwWindowShouldClose(window_));
+  app_->model().document.closePrompt = false;
+  frames(1);
+
   // Closing with unsaved changes asks first; "Don't save" closes and removes the recovery file.
   glfwSetWindowShouldClose(window_, 1);
   frames(2, "sculpt-close-prompt.png");
