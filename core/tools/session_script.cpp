@@ -190,7 +190,7 @@ PaintEvent parsePaint(const Reader& r) {
     r.failContext("a paint needs at least one of 'youngs', 'density', 'damping', 'poisson'");
   brush.target.youngs = r.numberOr("youngs", brush.target.youngs, 0.0, true, "a finite number > 0 (Pa)");
   brush.target.density =
-      r.numberOr("density", brush.target.density, 0.0, false, "a finite number >= 0 (kg/m^3)");
+      r.numberOr("density", brush.target.density, 0.0, true, "a finite number > 0 (kg/m^3)");
   brush.target.damping =
       r.numberOr("damping", brush.target.damping, 0.0, false, "a finite number >= 0");
   brush.target.poisson = r.numberOr("poisson", brush.target.poisson, -1.0, true,

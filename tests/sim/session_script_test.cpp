@@ -73,6 +73,8 @@ TEST(SessionScript, MalformedScriptsGiveOneSentenceNamingEventAndField) {
        "s.json: events[0] (grab): 'path[1]' must not go back in time (times must be non-decreasing)."},
       {wrap(R"({"t": 0, "type": "paint", "centre": [1, 1, 1], "radius": 1})"),
        "s.json: events[0] (paint): a paint needs at least one of 'youngs', 'density', 'damping', 'poisson'."},
+      {wrap(R"({"t": 0, "type": "paint", "centre": [1, 1, 1], "radius": 1, "density": 0})"),
+       "s.json: events[0] (paint): 'density' must be a finite number > 0 (kg/m^3) (got 0)."},
       {wrap(R"({"t": 0, "type": "paint", "centre": [1, 1, 1], "radius": 1, "youngs": 1e6, "falloff": "soft"})"),
        "s.json: events[0] (paint): 'falloff' must be one of smooth, sphere, linear, sharp, constant (got \"soft\")."},
       {wrap(R"({"t": 0, "type": "pin", "box": [[0, 0, 0], [1, 1, 1]], "colour": 1})"),
