@@ -3,13 +3,13 @@
 #include <cstdio>
 #include <cstdlib>
 #include <iostream>
-#include <sstream>
 #include <stdexcept>
 #include <system_error>
 #include <vector>
 
 #include "anim/frame_pattern.h"
 #include "cli/scene_options.h"
+#include "io/number_text.h"
 #include "util/shell_command.h"
 
 namespace sculpt::cli {
@@ -30,10 +30,9 @@ fs::path windowProgram() {
 }
 
 std::string formatNumber(double value) {
-  std::ostringstream out;
-  out.precision(17);
-  out << value;
-  return out.str();
+  std::string text;
+  appendNumber(text, value);  // 17 digits, locale-free: the window program reads it back exactly
+  return text;
 }
 
 }  // namespace

@@ -7,6 +7,8 @@
 
 #include <imgui.h>
 
+#include "anim/take_surface.h"
+
 namespace sculpt::app {
 namespace {
 
@@ -207,7 +209,8 @@ void drawExportDialog(AppModel& m) {
                         "by more than this part of the bounding-box diagonal");
   }
   ImGui::EndDisabled();
-  ImGui::Text("%d frames at %.4g fps, about %s", (d.last - d.first) / d.every + 1,
+  ImGui::Text("%u frames at %.4g fps, about %s",
+              framesEvery(static_cast<uint32_t>(d.last - d.first + 1), static_cast<uint32_t>(d.every)),
               m.record.takeFps / d.every, byteSize(d.estimateBytes).c_str());
   if (!d.problem.empty()) ImGui::TextColored(ImVec4(1.0f, 0.45f, 0.4f, 1.0f), "%s", d.problem.c_str());
   if (d.running) {

@@ -2,7 +2,6 @@
 // recorded frame instead of the newest simulated one) and the export dialog's worker.
 
 #include <algorithm>
-#include <array>
 #include <filesystem>
 #include <string>
 
@@ -236,7 +235,8 @@ void SculptApp::updateExportDialog() {
   if (d.problem.empty() && !parent.empty() && !std::filesystem::is_directory(parent, ignored))
     d.problem = "the folder " + parent.string() + " does not exist";
   if (!take && d.problem.empty()) d.problem = "nothing recorded yet";
-  if (d.problem.empty() && exportFormatAt(d.format) == ExportFormat::Mp4 && !programOnPath("ffmpeg"))
+  static const bool ffmpegFound = programOnPath("ffmpeg");  // once: this runs every frame
+  if (d.problem.empty() && exportFormatAt(d.format) == ExportFormat::Mp4 && !ffmpegFound)
     d.problem = "writing .mp4 needs the ffmpeg program (scripts/install-deps.sh installs it)";
   if (!take || d.running) return;
   // The estimate, once per range and format (a TakeSurface is cheap, but not free every frame).
@@ -277,7 +277,7 @@ bool SculptApp::startExport() {
     r.path = std::string(d.path.data());
     r.range = exportRange(d);
     r.every = static_cast<uint32_t>(d.every);
-    r.count = (r.range.count - 1) / r.every + 1;
+    r.count = framesEvery(r.range.count, r.every);
     try {
       std::vector<std::filesystem::path> pngs, videos;
       (format == ExportFormat::Mp4 ? videos : pngs).push_back(r.path);

@@ -18,9 +18,9 @@ TakeSurface::TakeSurface(std::shared_ptr<const Take> take, FrameRange range, uin
                                 std::to_string(range_.first + range_.count) +
                                 " are not in the take of " + std::to_string(frames) + " frames");
   const auto shownFrom = [this](uint32_t takeFrame) {  // the first shown frame at or after it
-    return (takeFrame - range_.first + every_ - 1) / every_;
+    return framesEvery(takeFrame - range_.first, every_);
   };
-  frames_ = shownFrom(range_.first + range_.count);
+  frames_ = framesEvery(range_.count, every_);
   const uint32_t end = range_.first + range_.count;
   for (const TakeSegment& s : take_->segments()) {
     const uint32_t first = shownFrom(std::max(s.frames.first, range_.first));

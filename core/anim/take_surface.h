@@ -15,6 +15,9 @@
 
 namespace sculpt {
 
+/// How many of `count` consecutive frames every `every`-th one keeps, starting with the first.
+inline uint32_t framesEvery(uint32_t count, uint32_t every) { return (count + every - 1) / every; }
+
 class TakeSurface : public AnimatedSurface {
  public:
   /// Frames [range.first, range.first + range.count) of `take` (count 0: to the end), every
