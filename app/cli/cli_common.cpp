@@ -13,6 +13,15 @@
 
 namespace sculpt::cli {
 
+GradientScheme gradientSchemeOption(const CliArgs& args) {
+  const auto value = args.value("gradients");
+  if (!value) return kDefaultGradientScheme;
+  const auto scheme = parseGradientScheme(*value);
+  if (!scheme)
+    throw UsageError("--gradients: unknown scheme '" + *value + "' (expected average or fit)");
+  return *scheme;
+}
+
 int printError(std::string_view message) {
   // One line, whatever the message holds (file names and messages may carry newlines).
   std::string line = "error: ";

@@ -10,6 +10,7 @@
 #include <string_view>
 #include <vector>
 
+#include "embed/gradient_scheme.h"
 #include "mesh/cell_complex.h"
 #include "mesh/topology.h"
 #include "mesh/validation.h"
@@ -24,6 +25,12 @@ inline constexpr int kExitBadInput = 2;
 /// Most levels any subcommand refines, and the most level-K cells it will build.
 inline constexpr int kMaxLevels = 6;
 inline constexpr uint64_t kMaxEstimatedCells = 50'000'000;
+
+class CliArgs;
+
+/// The value of --gradients (average or fit), kDefaultGradientScheme when absent. Throws
+/// UsageError for another value.
+GradientScheme gradientSchemeOption(const CliArgs& args);
 
 /// Prints "error: <message>" to stderr as exactly one line; returns kExitBadInput.
 int printError(std::string_view message);

@@ -31,18 +31,21 @@ namespace sculpt::cli {
 
 const char* const kDeformUsage =
     "  deform --rest REST --deformed DEF --surface IN [--method phong|linear|vertex|attribute]\n"
-    "         [--eps E] [--radius R] [--normals analytic|recompute|keep] --out OUT\n"
+    "         [--gradients fit|average] [--eps E] [--radius R]\n"
+    "         [--normals analytic|recompute|keep] --out OUT\n"
     "      Moves the surface IN (.obj, .gltf, .glb), embedded in the volume mesh REST (.vtk,\n"
     "      .msh, .node/.ele; tetrahedra or hexahedra), with DEF, the same mesh deformed (same\n"
     "      nodes and cells). OUT (.obj, .glb, .gltf) keeps IN's vertex count and order, faces\n"
-    "      and texture coordinates. Method default phong; E regularises the node gradients\n"
-    "      (default 1); R is the attribute radius (default 1.5 x mean edge length). Normals:\n"
-    "      analytic (default; cofactor of the gradient, recomputed for attribute), recompute\n"
-    "      (area-weighted from the deformed faces) or keep. A run of '#' in DEF's file name is a\n"
+    "      and texture coordinates. Method default phong. Node gradients: fit (default; a\n"
+    "      quadratic least-squares fit around each node, third order in surface cells too) or\n"
+    "      average (the paper's eq. 12); E regularises the average (default 1); R is the\n"
+    "      attribute radius (default 1.5 x mean edge length). Normals: analytic (default;\n"
+    "      cofactor of the gradient, recomputed for attribute), recompute (area-weighted from\n"
+    "      the deformed faces) or keep. A run of '#' in DEF's file name is a\n"
     "      frame number (sim_####.vtk): every frame from the lowest to the highest number found\n"
     "      is deformed, to OUT with its own '#' run replaced. Points outside REST are\n"
     "      extrapolated (with a warning). Last line: deformed=<frames> vertices=<n>\n"
-    "      outside=<points outside REST> method=<M>.\n";
+    "      outside=<points outside REST> method=<M> gradients=<fit|average>.\n";
 
 namespace {
 
@@ -219,6 +222,7 @@ DeformOptions parseOptions(const CliArgs& args) {
     if (options.settings.attributeRadius <= 0.0)
       throw UsageError("--radius: '" + *radius + "' must be > 0 (leave it out for the default)");
   }
+  options.settings.gradients = gradientSchemeOption(args);
   options.settings.buildAttributeWeights = options.method == InterpolationMethod::Attribute;
 
   const std::string normals = args.value("normals").value_or("analytic");
@@ -339,7 +343,7 @@ int deformCommand(const CliArgs& args, std::string& file) {
 
   std::cout << "deformed=" << written << " vertices=" << surface.numVertices()
             << " outside=" << embedding.outsideCount << " method=" << methodName(options.method)
-            << '\n';
+            << " gradients=" << gradientSchemeName(options.settings.gradients) << '\n';
   return kExitSuccess;
 }
 
@@ -350,7 +354,8 @@ int runDeformCommand(const std::vector<std::string>& args) {
   return runGuarded(file, [&] {
     const OptionSpec specs[] = {{"rest", true},    {"deformed", true}, {"surface", true},
                                 {"method", true},  {"eps", true},      {"radius", true},
-                                {"normals", true}, {"out", true},      {"help", false}};
+                                {"normals", true}, {"out", true},      {"gradients", true},
+                                {"help", false}};
     return deformCommand(CliArgs::parse(args, specs), file);
   });
 }

@@ -56,9 +56,8 @@ EmbeddedDeformer::EmbeddedDeformer(VolumeMesh rest, const Points& points, Embedd
     : rest_(std::move(rest)), embedding_(std::move(embedding)) {
   if (embedding_.numPoints() != points.rows())
     throw std::invalid_argument("the embedding does not match the points");
-  gradientWeights_ = cellToNodeWeights(rest_, settings.eps);
-  gradientStencil_ =
-      nodeGradientStencil(rest_, cellGradientOperator(rest_), gradientWeights_);
+  gradientScheme_ = settings.gradients;
+  gradientStencil_ = nodeGradientStencil(rest_, settings.gradients, settings.eps);
 
   // Distinct tetrahedron edges and each cell's slot.
   {

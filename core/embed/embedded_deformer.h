@@ -1,10 +1,10 @@
 #pragma once
 // Moves a detailed point set with a deforming cell mesh, every frame.
 //
-// Precomputed once (double precision): the embedding, the cell-to-node gradient weights, the
-// rest-space shape gradients, the points sorted by cell in structure-of-arrays form and, for the
+// Precomputed once (double precision): the embedding, the node-gradient stencil
+// (gradient_scheme.h), the points sorted by cell in structure-of-arrays form and, for the
 // attribute method, each point's metaball neighbours.
-// Per frame: setFrame() computes cell and node gradients and turns each cell's interpolant into a
+// Per frame: setFrame() computes node gradients through the stencil and turns each cell's interpolant into a
 // small polynomial (O(nodes + cells)); evaluate*() then costs a few dozen multiply-adds per point
 // (O(points), single precision on the fast path, both cores).
 //
@@ -26,7 +26,7 @@
 #include "embed/attribute_transfer.h"
 #include "embed/deformation_gradients.h"
 #include "embed/embedding.h"
-#include "embed/gradient_weights.h"
+#include "embed/gradient_scheme.h"
 #include "embed/interpolation_method.h"
 #include "mesh/volume_mesh.h"
 #include "util/progress.h"
@@ -35,6 +35,7 @@ namespace sculpt {
 
 struct DeformerSettings {
   double eps = 1.0;              ///< regulariser of the cell-to-node weights
+  GradientScheme gradients = kDefaultGradientScheme;  ///< how node gradients are reconstructed
   double attributeRadius = 0.0;  ///< attribute method radius; 0: 1.5 x the mean edge length
   bool buildAttributeWeights = true;  ///< false skips the attribute precompute (not needed)
 };
@@ -57,7 +58,7 @@ class EmbeddedDeformer {
 
   const VolumeMesh& rest() const { return rest_; }
   const Embedding& embedding() const { return embedding_; }
-  const CompressedRows<CellWeight>& gradientWeights() const { return gradientWeights_; }
+  GradientScheme gradientScheme() const { return gradientScheme_; }
   double attributeRadius() const { return attributeRadius_; }
   uint32_t numPoints() const { return embedding_.numPoints(); }
   /// Sorted position k holds input point sortedToInput()[k].
@@ -105,7 +106,7 @@ class EmbeddedDeformer {
 
   VolumeMesh rest_;
   Embedding embedding_;
-  CompressedRows<CellWeight> gradientWeights_;
+  GradientScheme gradientScheme_;
   NodeGradientStencil gradientStencil_;
   double attributeRadius_ = 0.0;
   CompressedRows<NodeWeight> attributeWeights_;  ///< rows in sorted order

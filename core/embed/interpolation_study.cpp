@@ -12,9 +12,11 @@
 namespace sculpt {
 
 MethodErrors measureInterpolationErrors(const VolumeMesh& mesh, const Points& testPoints,
-                                        const AnalyticDeformation& phi, double eps) {
+                                        const AnalyticDeformation& phi, GradientScheme scheme,
+                                        double eps) {
   DeformerSettings settings;
   settings.eps = eps;
+  settings.gradients = scheme;
   EmbeddedDeformer deformer(mesh, testPoints, settings);
   Points nodes(mesh.positions.rows(), 3);
   for (Eigen::Index i = 0; i < nodes.rows(); ++i)
@@ -45,9 +47,11 @@ Eigen::Vector3d bendAndTwist(const Eigen::Vector3d& X) {
 }
 
 ConvergenceSeries runConvergenceStudy(StudyCells cells, StudyPlacement placement,
-                                      std::span<const double> spacings, double eps) {
+                                      std::span<const double> spacings,
+                                      GradientScheme scheme, double eps) {
   // The test cube's corner is fixed; three layers of cubes surround it (none above it in the
-  // surface case), so the mesh shrinks with h around fixed test points.
+  // surface case, none above and in +x and +y at a corner), so the mesh shrinks with h around
+  // fixed test points.
   const Eigen::Vector3d P0(0.1, 0.2, 0.3);
   constexpr uint32_t kLayers = 3;
   std::mt19937 random(2020);
@@ -58,10 +62,12 @@ ConvergenceSeries runConvergenceStudy(StudyCells cells, StudyPlacement placement
   ConvergenceSeries series;
   series.cells = cells;
   series.placement = placement;
+  series.scheme = scheme;
   for (double h : spacings) {
     LatticeSpec spec;
     const uint32_t above = placement == StudyPlacement::Interior ? kLayers : 0;
-    spec.cubes = {2 * kLayers + 1, 2 * kLayers + 1, kLayers + 1 + above};
+    const uint32_t beside = placement == StudyPlacement::Corner ? 0 : kLayers;
+    spec.cubes = {kLayers + 1 + beside, kLayers + 1 + beside, kLayers + 1 + above};
     spec.spacing = h;
     spec.origin = P0 - h * Eigen::Vector3d(kLayers, kLayers, kLayers);
     const VolumeMesh mesh = cells == StudyCells::Tetrahedra ? tetLattice(spec) : hexLattice(spec);
@@ -71,7 +77,7 @@ ConvergenceSeries runConvergenceStudy(StudyCells cells, StudyPlacement placement
     ConvergenceRow row;
     row.spacing = h;
     row.meanEdge = meanEdgeLength(mesh);
-    row.errors = measureInterpolationErrors(mesh, testPoints, bendAndTwist, eps);
+    row.errors = measureInterpolationErrors(mesh, testPoints, bendAndTwist, scheme, eps);
     series.rows.push_back(row);
   }
   std::vector<double> x, y;
@@ -118,7 +124,7 @@ RegularizedKelvinlet makeBrush(KelvinletBrush brush, double amplitude) {
 }  // namespace
 
 std::vector<KelvinletRow> runKelvinletStudy(std::span<const double> spacingOverEps,
-                                            bool jittered) {
+                                            bool jittered, GradientScheme scheme) {
   std::mt19937 random(17);
   std::uniform_real_distribution<double> uniform(-1.0, 1.0);
   Points testPoints(2000, 3);
@@ -147,7 +153,7 @@ std::vector<KelvinletRow> runKelvinletStudy(std::span<const double> spacingOverE
       row.spacingOverEps = ratio;
       row.jittered = jittered;
       row.errors = measureInterpolationErrors(
-          mesh, testPoints, [&](const Eigen::Vector3d& X) { return kelvinlet.map(X); });
+          mesh, testPoints, [&](const Eigen::Vector3d& X) { return kelvinlet.map(X); }, scheme);
       row.rmsRatio = row.errors.rms[0] / row.errors.rms[2];
       row.maxRatio = row.errors.max[0] / row.errors.max[2];
       rows.push_back(row);

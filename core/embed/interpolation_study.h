@@ -10,6 +10,7 @@
 
 #include <Eigen/Core>
 
+#include "embed/gradient_scheme.h"
 #include "embed/interpolation_method.h"
 #include "mesh/cell_complex.h"
 #include "mesh/volume_mesh.h"
@@ -29,9 +30,12 @@ struct MethodErrors {
 };
 
 /// Deforms `mesh` by phi at its nodes and measures each method at `testPoints` (double precision,
-/// default settings: eps = 1, attribute radius 1.5 x mean edge length).
+/// attribute radius 1.5 x mean edge length) with node gradients by `scheme` (eps regularises
+/// the averaging weights).
 MethodErrors measureInterpolationErrors(const VolumeMesh& mesh, const Points& testPoints,
-                                        const AnalyticDeformation& phi, double eps = 1.0);
+                                        const AnalyticDeformation& phi,
+                                        GradientScheme scheme = kDefaultGradientScheme,
+                                        double eps = 1.0);
 
 /// The smooth test deformation of the convergence experiment: a bend of radius 1.5 about the
 /// y axis followed by a twist about z of 0.8 rad per unit length.
@@ -41,6 +45,7 @@ enum class StudyCells { Tetrahedra, Hexahedra };
 enum class StudyPlacement {
   Interior,  ///< the test cube has three layers of cubes on every side
   Surface,   ///< the test cube is in the top layer: nothing above it
+  Corner,    ///< the test cube is at a corner of the lattice: nothing above it, in +x or in +y
 };
 
 struct ConvergenceRow {
@@ -52,6 +57,7 @@ struct ConvergenceRow {
 struct ConvergenceSeries {
   StudyCells cells = StudyCells::Tetrahedra;
   StudyPlacement placement = StudyPlacement::Interior;
+  GradientScheme scheme = kDefaultGradientScheme;
   std::vector<ConvergenceRow> rows;
   std::array<double, 4> slopes{};  ///< least-squares log-log slopes of max error vs mean edge
 };
@@ -59,9 +65,11 @@ struct ConvergenceSeries {
 /// The convergence experiment: a lattice of cubes of edge h (split into 6 tetrahedra each, or
 /// hexahedra) translated so that a fixed test cube [P0, P0 + h]^3 keeps 25 test points at the
 /// same local positions for every h; bendAndTwist as the deformation.
-/// `eps` is the regulariser of the node gradients (default 1).
+/// `eps` is the regulariser of the averaged node gradients (default 1).
 ConvergenceSeries runConvergenceStudy(StudyCells cells, StudyPlacement placement,
-                                      std::span<const double> spacings, double eps = 1.0);
+                                      std::span<const double> spacings,
+                                      GradientScheme scheme = kDefaultGradientScheme,
+                                      double eps = 1.0);
 
 enum class KelvinletBrush { Grab, Twist, Pinch };
 
@@ -79,7 +87,8 @@ struct KelvinletRow {
 /// h = ratio * eps (regular, or with interior nodes jittered by 15% of h) and 2000 test points
 /// in the ball of radius 1.5 eps; the analytic map is the truth at both.
 std::vector<KelvinletRow> runKelvinletStudy(std::span<const double> spacingOverEps,
-                                            bool jittered);
+                                            bool jittered,
+                                            GradientScheme scheme = kDefaultGradientScheme);
 
 const char* brushName(KelvinletBrush brush);
 

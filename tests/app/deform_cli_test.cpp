@@ -202,13 +202,16 @@ TEST_F(DeformCliTest, AffineMapIsReproducedByTheGradientMethods) {
   const Points expected = mappedPoints(surface.positions, affine);
   for (bool hexahedra : {false, true}) {
     writeScene(unitLattice(hexahedra), surface, affine);
-    for (const char* method : {"phong", "linear", "vertex"}) {
-      SCOPED_TRACE(std::string(method) + (hexahedra ? " on hexahedra" : " on tetrahedra"));
+    for (const char* method : {"phong", "linear", "vertex"})
+    for (const char* gradients : {"fit", "average"}) {
+      SCOPED_TRACE(std::string(method) + (hexahedra ? " on hexahedra" : " on tetrahedra") +
+                   ", gradients " + gradients);
       CliResult result;
-      const SurfaceMesh out = deform(std::string("--method ") + method, "out.obj", &result);
+      const SurfaceMesh out = deform(
+          std::string("--method ") + method + " --gradients " + gradients, "out.obj", &result);
       ASSERT_EQ(out.numVertices(), surface.numVertices());
       EXPECT_EQ(result.lastLine(), "deformed=1 vertices=" + std::to_string(surface.numVertices()) +
-                                       " outside=0 method=" + method);
+                                       " outside=0 method=" + method + " gradients=" + gradients);
       EXPECT_TRUE(result.errLines().empty()) << result.err;
       // Same vertices in the same order, at the affine image.
       EXPECT_LT(maxRowDistance(out.positions, expected), 1e-9);
@@ -238,7 +241,7 @@ TEST_F(DeformCliTest, DefaultIsPhongAndAttributeIsCloseWithRecomputedNormals) {
   writeScene(unitLattice(), surface, affine);
   CliResult result;
   const SurfaceMesh phong = deform("", "phong.obj", &result);
-  EXPECT_NE(result.lastLine().find("method=phong"), std::string::npos);
+  EXPECT_NE(result.lastLine().find("method=phong gradients=fit"), std::string::npos);
   EXPECT_LT(maxRowDistance(phong.positions, mappedPoints(surface.positions, affine)), 1e-9);
 
   // The attribute method is only first-order: close to the map, not exact. Its normals are the
@@ -319,6 +322,24 @@ TEST_F(DeformCliTest, PhongBeatsLinearOnABend) {
   EXPECT_LT(phong, 0.5 * linear) << "phong " << phong << " linear " << linear;
 }
 
+TEST_F(DeformCliTest, FitGradientsBeatTheAverageNearTheMeshBoundary) {
+  // A sphere nearly touching the unit cube's faces: most of it lies in boundary cells, where the
+  // averaged node gradients are one-sided and the fitted ones are not.
+  const SurfaceMesh surface = sphereSurface({0.5, 0.5, 0.5}, 0.48, 16, 24);
+  writeScene(unitLattice(), surface, bend);
+  const Points exact = mappedPoints(surface.positions, bend);
+  const auto rmsError = [&](const SurfaceMesh& out) -> double {
+    EXPECT_EQ(out.positions.rows(), exact.rows());
+    if (out.positions.rows() != exact.rows()) return INFINITY;
+    return std::sqrt((out.positions - exact).rowwise().squaredNorm().mean());
+  };
+  const double average = rmsError(deform("--gradients average", "average.obj"));
+  const double fit = rmsError(deform("--gradients fit", "fit.obj"));
+  std::printf("[ measured ] rms error near the boundary: average %.3e, fit %.3e (%.1fx)\n", average,
+              fit, average / fit);
+  EXPECT_LT(fit, 0.5 * average);
+}
+
 TEST_F(DeformCliTest, FrameSequence) {
   const VolumeMesh rest = unitLattice();
   const SurfaceMesh surface = sphereSurface({0.5, 0.5, 0.5}, 0.3);
@@ -345,7 +366,7 @@ TEST_F(DeformCliTest, FrameSequence) {
   CliResult result = run(base + " --out " + quote(path("out_####.obj")));
   ASSERT_EQ(result.exitCode, 0) << result.err;
   EXPECT_EQ(result.lastLine(), "deformed=3 vertices=" + std::to_string(surface.numVertices()) +
-                                   " outside=0 method=phong");
+                                   " outside=0 method=phong gradients=fit");
   const auto lines = result.errLines();
   ASSERT_EQ(lines.size(), 3u) << result.err;
   for (int k = 1; k <= 3; ++k) {
@@ -455,6 +476,7 @@ TEST_F(DeformCliTest, MalformedInputIsOneErrorLine) {
   expectBadInput(scene + " --radius -2 --method attribute" + out, "--radius");
   expectBadInput(scene + " --radius inf --method attribute" + out, "--radius");
   expectBadInput(scene + " --method cubic" + out, "unknown method 'cubic'");
+  expectBadInput(scene + " --gradients quadratic" + out, "unknown scheme 'quadratic'");
   expectBadInput(scene + " --normals smooth" + out, "unknown mode 'smooth'");
   expectBadInput(scene + " --out " + quote(path("out.stl")), "unknown extension");
   expectBadInput(scene + " extra" + out, "no positional argument");

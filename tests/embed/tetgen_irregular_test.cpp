@@ -67,6 +67,38 @@ TEST(TetGenIrregular, PhongBeatsLinearOnKelvinletsAndBendTwist) {
   EXPECT_LT(bend.rms[2], bend.rms[0]);
 }
 
+TEST(TetGenIrregular, QuadraticFitGradientsBeatTheAverageOnASphere) {
+  // An irregular mesh with a curved boundary: most of a ball's volume is near its surface.
+  EXPECT_TRUE(test::tetgenAvailable()) << "tetgen not on PATH (scripts/install-deps.sh installs it)";
+  test::ScopedTempDir dir("phong_tetgen_sphere");
+  std::string error;
+  const auto mesh = test::tetgenMesh(test::icosphereSurface(Eigen::Vector3d::Zero(), 1.0, 3),
+                                     0.001, dir.path(), &error);
+  ASSERT_TRUE(mesh) << error;
+  ASSERT_GT(mesh->numCells(), 1000u);
+  // Points inside the ball, where the mesh is: a ball of radius 0.98.
+  const Points points = ballPoints(3000, 0.98, 11);
+  const AnalyticDeformation maps[] = {
+      bendAndTwist,
+      [](const Eigen::Vector3d& X) {
+        return RegularizedKelvinlet::twist(Eigen::Vector3d(0.6, 0.1, -0.2),
+                                           Eigen::Vector3d(0.1, 0.2, 0.5), 1.0)
+            .map(X);
+      }};
+  const char* names[] = {"bend+twist", "kelvinlet twist at the surface"};
+  for (size_t k = 0; k < std::size(maps); ++k) {
+    const MethodErrors fit = measureInterpolationErrors(*mesh, points, maps[k], GradientScheme::Fit);
+    const MethodErrors average =
+        measureInterpolationErrors(*mesh, points, maps[k], GradientScheme::Average);
+    std::printf("[ measured ] sphere, %u tets, mean edge %.4f, %s: phong rms fit %.3e average %.3e "
+                "(%.2fx), max fit %.3e average %.3e; linear rms %.3e\n",
+                mesh->numCells(), meanEdgeLength(*mesh), names[k], fit.rms[2], average.rms[2],
+                average.rms[2] / fit.rms[2], fit.max[2], average.max[2], fit.rms[0]);
+    EXPECT_LT(fit.rms[2], average.rms[2]) << names[k];
+    EXPECT_LT(fit.max[2], average.max[2]) << names[k];
+  }
+}
+
 TEST(TetGenIrregular, EveryPointFiniteInsideAndOutside) {
   const VolumeMesh mesh = tetgenBox("phong_tetgen_outside");
   ASSERT_GT(mesh.numCells(), 1000u);
