@@ -39,13 +39,15 @@ const char* const kBenchUsage =
     "      are fixed. Prints the model setup time, threads, control points and nodes; the last\n"
     "      line is fem_step_ms=<median> elements=<n> tricubic=<n> trilinear=<n> pyramid=<n>\n"
     "      cg_iterations=<mean per timed step>. Exit 1 when a step fails.\n"
-    "  bench deform [--vertices N] [--method phong|linear|vertex|attribute] [--repeat R]\n"
+    "  bench deform [--vertices N] [--method phong|linear|vertex|attribute]\n"
+    "               [--gradients fit|average] [--repeat R]\n"
     "      Built-in scene: a tet lattice of 9261 nodes and N points (default 1000000) on a\n"
     "      bumpy sphere inside it. Times a frame (gradients, per-cell coefficients, every point\n"
     "      in single precision; median of R, default 31); each frame of M is followed by a\n"
-    "      linear frame and stderr reports the median ratio M/linear of the run. Last line:\n"
-    "      deform_ms=<median per frame> embed_ms=<precompute> vertices=<N> method=<M>\n"
-    "      threads=<T>.\n";
+    "      linear frame and, for phong and vertex, a frame with the other gradient scheme;\n"
+    "      stderr reports the median ratios of the run. Last line: deform_ms=<median per frame>\n"
+    "      embed_ms=<precompute> vertices=<N> method=<M> gradients=<S> threads=<T>, and for\n"
+    "      phong and vertex <S>_over_<other>=<median ratio per frame>.\n";
 
 namespace {
 

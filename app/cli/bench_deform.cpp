@@ -1,13 +1,15 @@
-// sculpt-cli bench deform [--vertices N] [--method M] [--repeat R]
+// sculpt-cli bench deform [--vertices N] [--method M] [--gradients fit|average] [--repeat R]
 //
 // The built-in scene: a 20x20x20-cube tetrahedral lattice of the unit cube (9261 nodes, 48000
 // tetrahedra) and N points on a bumpy sphere inside it (a stand-in for a detailed surface, in a
 // coherent order as mesh files have). A frame is what the application does per displayed frame:
 // new node positions in, gradients, per-cell coefficients and every point's position out
-// (single precision, cell-sorted structure of arrays, all worker threads).
+// (single precision, cell-sorted structure of arrays, all worker threads). For the methods that
+// use node gradients, frames with the other gradient scheme are interleaved in the same run.
 
 #include "cli/bench_deform.h"
 #include "cli/bench_timing.h"
+#include "cli/cli_common.h"
 
 #include <algorithm>
 #include <chrono>
@@ -15,6 +17,7 @@
 #include <cstdio>
 #include <iostream>
 #include <numbers>
+#include <optional>
 #include <string>
 #include <vector>
 
@@ -25,7 +28,8 @@
 
 namespace sculpt::cli {
 
-const OptionSpec kBenchDeformOptions[3] = {{"vertices", true}, {"method", true}, {"repeat", true}};
+const OptionSpec kBenchDeformOptions[4] = {
+    {"vertices", true}, {"method", true}, {"gradients", true}, {"repeat", true}};
 
 namespace {
 
@@ -63,11 +67,22 @@ int benchDeform(const CliArgs& args) {
   VolumeMesh mesh = tetLattice(spec);
   const Points surface = bumpySphere(static_cast<uint32_t>(vertices));
 
+  const GradientScheme scheme = gradientSchemeOption(args);
+  const GradientScheme otherScheme =
+      scheme == GradientScheme::Fit ? GradientScheme::Average : GradientScheme::Fit;
+  const bool usesGradients =
+      *method == InterpolationMethod::Phong || *method == InterpolationMethod::Vertex;
   DeformerSettings settings;
   settings.buildAttributeWeights = *method == InterpolationMethod::Attribute;
+  settings.gradients = scheme;
   const Clock::time_point embedStart = Clock::now();
   EmbeddedDeformer deformer(mesh, surface, settings);
   const double embedMs = millisecondsSince(embedStart);
+  std::optional<EmbeddedDeformer> other;
+  if (usesGradients) {
+    settings.gradients = otherScheme;
+    other.emplace(mesh, surface, settings);
+  }
 
   // Frames alternate between two deformed states so that nothing is cached across frames.
   Points frames[2];
@@ -80,10 +95,18 @@ int benchDeform(const CliArgs& args) {
   }
   FloatPositions out;
   out.resize(deformer.numPoints());
-  // Each timed frame of the method is followed by a linear frame on the same data, so that the
-  // ratio to linear interpolation comes from one run (these machines are shared and noisy).
+  const auto timedFrame = [&](EmbeddedDeformer& d, const Points& frame, InterpolationMethod m) {
+    const Clock::time_point start = Clock::now();
+    d.setFrame(frame, m);
+    d.evaluateSorted(out.x.data(), out.y.data(), out.z.data());
+    return millisecondsSince(start);
+  };
+  // Each timed frame of the method is followed by a linear frame on the same data, and by one
+  // with the other gradient scheme, so that the ratios come from one run (these machines are
+  // shared and noisy).
   const bool compare = *method != InterpolationMethod::Linear;
-  std::vector<double> samples, nodeStage, pointStage, linearSamples, ratios;
+  std::vector<double> samples, nodeStage, pointStage, linearSamples, ratios, otherSamples,
+      schemeRatios;
   for (int r = -2; r < repeat; ++r) {  // two untimed warm-up frames
     const Points& frame = frames[(r + 2) % 2];
     const Clock::time_point start = Clock::now();
@@ -91,13 +114,8 @@ int benchDeform(const CliArgs& args) {
     const Clock::time_point middle = Clock::now();
     deformer.evaluateSorted(out.x.data(), out.y.data(), out.z.data());
     const double total = millisecondsSince(start);
-    double linear = 0.0;
-    if (compare) {
-      const Clock::time_point linearStart = Clock::now();
-      deformer.setFrame(frame, InterpolationMethod::Linear);
-      deformer.evaluateSorted(out.x.data(), out.y.data(), out.z.data());
-      linear = millisecondsSince(linearStart);
-    }
+    const double linear = compare ? timedFrame(deformer, frame, InterpolationMethod::Linear) : 0.0;
+    const double otherMs = other ? timedFrame(*other, frame, *method) : 0.0;
     if (r < 0) continue;
     samples.push_back(total);
     nodeStage.push_back(std::chrono::duration<double, std::milli>(middle - start).count());
@@ -106,6 +124,10 @@ int benchDeform(const CliArgs& args) {
       linearSamples.push_back(linear);
       ratios.push_back(total / linear);
     }
+    if (other) {
+      otherSamples.push_back(otherMs);
+      schemeRatios.push_back(total / otherMs);
+    }
   }
   const double medianMs = median(samples);
   std::cerr << "bench deform: per frame, gradients and cell coefficients " << median(nodeStage)
@@ -113,13 +135,24 @@ int benchDeform(const CliArgs& args) {
   if (compare)
     std::cerr << "bench deform: linear frames interleaved in the same run " << median(linearSamples)
               << " ms; median ratio " << methodName << "/linear " << median(ratios) << '\n';
-  char line[256];
+  const std::string schemeName(gradientSchemeName(scheme)), otherName(gradientSchemeName(otherScheme));
+  if (other)
+    std::cerr << "bench deform: " << otherName << " gradients interleaved in the same run "
+              << median(otherSamples) << " ms; median ratio " << schemeName << "/" << otherName
+              << " " << median(schemeRatios) << '\n';
+  char line[320];
   std::snprintf(line, sizeof line,
-                "deform_ms=%.3f embed_ms=%.1f vertices=%d method=%s threads=%u", medianMs, embedMs,
-                vertices, methodName.c_str(), workerCount());
+                "deform_ms=%.3f embed_ms=%.1f vertices=%d method=%s gradients=%s threads=%u",
+                medianMs, embedMs, vertices, methodName.c_str(), schemeName.c_str(), workerCount());
+  std::string last = line;
+  if (other) {
+    std::snprintf(line, sizeof line, " %s_over_%s=%.3f", schemeName.c_str(), otherName.c_str(),
+                  median(schemeRatios));
+    last += line;
+  }
   std::cerr << "bench deform: " << mesh.numNodes() << " nodes, " << mesh.numCells()
             << " tetrahedra, " << deformer.embedding().outsideCount << " points outside\n";
-  std::cout << line << '\n';
+  std::cout << last << '\n';
   return 0;
 }
 

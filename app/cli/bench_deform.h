@@ -6,7 +6,7 @@
 namespace sculpt::cli {
 
 /// Options of bench deform (besides --help).
-extern const OptionSpec kBenchDeformOptions[3];
+extern const OptionSpec kBenchDeformOptions[4];
 
 /// Runs the benchmark; prints the result line. Throws UsageError.
 int benchDeform(const CliArgs& args);

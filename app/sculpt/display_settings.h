@@ -5,6 +5,7 @@
 #include <optional>
 #include <string_view>
 
+#include "embed/gradient_scheme.h"
 #include "embed/interpolation_method.h"
 
 namespace sculpt::app {
@@ -21,6 +22,7 @@ std::optional<FieldKind> parseField(std::string_view name);
 
 struct DisplaySettings {
   InterpolationMethod method = InterpolationMethod::Phong;
+  GradientScheme gradients = kDefaultGradientScheme;  ///< node gradients of phong and vertex
   FieldKind field = FieldKind::None;
   bool autoRange = true;  ///< the colour map spans the field's current minimum and maximum
   float rangeLow = 0.0f, rangeHigh = 1.0f;

@@ -18,6 +18,7 @@ const char* const kUsage =
     "  --level K              simulation level (1..3)\n"
     "  --cage N               cage cells across a surface (1..64, default 6)\n"
     "  --method M             phong | linear | vertex | attribute\n"
+    "  --gradients G          fit | average: node gradients of phong and vertex (default fit)\n"
     "  --field F              none | youngs | density | displacement | strain | damping\n"
     "  --clip x|y|z           clipping plane through the middle of the solid\n"
     "  --wireframe --flat --show-cells --show-control --no-grid\n"
@@ -99,6 +100,12 @@ Options parseOptions(int argc, char** argv, bool* helpShown) {
         throw std::invalid_argument("--method must be phong, linear, vertex or attribute (got '" +
                                     name + "')");
       options.display.method = *method;
+    } else if (arg == "--gradients") {
+      const std::string name = value();
+      const auto scheme = parseGradientScheme(name);
+      if (!scheme)
+        throw std::invalid_argument("--gradients must be fit or average (got '" + name + "')");
+      options.display.gradients = *scheme;
     } else if (arg == "--field") {
       const std::string name = value();
       const auto field = parseField(name);

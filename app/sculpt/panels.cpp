@@ -273,6 +273,18 @@ void displayPanel(AppModel& m) {
   int method = static_cast<int>(d.method);
   if (ImGui::Combo("Deformation", &method, "Linear\0Vertex\0Phong\0Attribute\0"))
     d.method = static_cast<InterpolationMethod>(method);
+  const bool usesGradients =
+      d.method == InterpolationMethod::Phong || d.method == InterpolationMethod::Vertex;
+  ImGui::BeginDisabled(!usesGradients);
+  int gradients = static_cast<int>(d.gradients);
+  if (ImGui::Combo("Node gradients", &gradients, "Average (paper)\0Quadratic fit\0"))
+    d.gradients = static_cast<GradientScheme>(gradients);
+  if (ImGui::IsItemHovered(ImGuiHoveredFlags_AllowWhenDisabled))
+    ImGui::SetTooltip(
+        "How each node's deformation gradient is found. Quadratic fit: third-order accurate on\n"
+        "the surface too; Average: the paper's weighted average of cell gradients (eq. 12),\n"
+        "one order less in the surface cells. Used by Phong and Vertex.");
+  ImGui::EndDisabled();
   int field = static_cast<int>(d.field);
   if (ImGui::Combo("Field", &field, "None\0Young's modulus\0Density\0Displacement\0Strain energy\0Damping\0"))
     d.field = static_cast<FieldKind>(field);

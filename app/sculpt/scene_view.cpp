@@ -76,8 +76,17 @@ void SceneView::uploadDeformation(const DisplaySettings& display) {
     deformer_->setAttributeNeighbours(attributeTransferWeights(
         g.cellMesh.positions, g.restPositions, defaultAttributeRadius(meanEdgeLength(g.cellMesh))));
   }
-  deformer_->setFrame(frame_.nodes, frame_.gradients, method);
+  // The frame carries gradients by the default scheme; another one is applied here, O(nodes).
+  const std::vector<Eigen::Matrix3d>* gradients = &frame_.gradients;
+  if (display.gradients != kDefaultGradientScheme &&
+      frame_.nodes.rows() == geometry_->cellMesh.positions.rows()) {
+    applyNodeGradientStencil(geometry_->gradientStencil(display.gradients), frame_.nodes,
+                             schemeGradients_);
+    gradients = &schemeGradients_;
+  }
+  deformer_->setFrame(frame_.nodes, *gradients, method);
   uploadedMethod_ = method;
+  uploadedGradients_ = display.gradients;
   lastUploadMs_ =
       std::chrono::duration<double, std::milli>(std::chrono::steady_clock::now() - start).count();
 }
@@ -139,7 +148,9 @@ void SceneView::draw(const glm::mat4& view, const glm::mat4& projection,
                      const DisplaySettings& display, FieldRange range) {
   if (!geometry_) return;
   const SceneGeometry& g = *geometry_;
-  if (display.method != uploadedMethod_ || display.field != uploadedField_) upload(display);
+  if (display.method != uploadedMethod_ || display.gradients != uploadedGradients_ ||
+      display.field != uploadedField_)
+    upload(display);
   if (display.showGrid) grid_.draw(view, projection, 1.0f);
   if (display.showAxes) axes_.draw(view, projection, 1.0f);
 

@@ -71,6 +71,9 @@ class SceneView {
   render::SliceRenderer slice_;
   std::vector<render::CellEdge> cellEdges_;  ///< level-K cell edges by element kind, per geometry
   InterpolationMethod uploadedMethod_ = InterpolationMethod::Phong;
+  GradientScheme uploadedGradients_ = kDefaultGradientScheme;
+  /// The frame's node gradients by the displayed scheme, where it is not the frame's own.
+  std::vector<Eigen::Matrix3d> schemeGradients_;
   FieldKind uploadedField_ = FieldKind::None;
   glm::vec3 centre_{0.0f}, boxLow_{0.0f}, boxHigh_{0.0f};
   float radius_ = 1.0f;

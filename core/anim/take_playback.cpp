@@ -9,7 +9,7 @@ void playbackFrame(const Take& take, uint32_t frame, SceneFrame& out) {
   const SceneGeometry& g = surface.geometry();
   take.controlPoints(frame, out.control);
   surface.cellNodes(out.control, out.nodes);
-  applyNodeGradientStencil(surface.solid().stencil, out.nodes, out.gradients);
+  applyNodeGradientStencil(g.gradientStencil(kDefaultGradientScheme), out.nodes, out.gradients);
   out.sceneId = g.sceneId;
   const size_t cells = g.cellMesh.numCells();
   if (const CellFields* fields = take.fieldsAt(frame)) {

@@ -1,10 +1,9 @@
 #include "embed/gradient_fit.h"
 
+#include <Eigen/Eigenvalues>
 #include <algorithm>
 #include <limits>
 #include <utility>
-
-#include <Eigen/Eigenvalues>
 
 #include "util/compressed_rows.h"
 #include "util/parallel_for.h"
@@ -65,9 +64,9 @@ double fitRow(const VolumeMesh& rest, uint32_t node, const std::vector<uint32_t>
   const double smallest = eigen.eigenvalues()(0), largest = eigen.eigenvalues()(8);
   if (!(smallest > 0.0) || !(largest <= kMaxFitCondition * smallest)) return kUnfit;
   // The gradient's rows of normal^-1: P = (V diag(1/lambda) V^T)[0..2, :].
-  const Eigen::Matrix<double, 3, 9> gradientRows =
-      eigen.eigenvectors().topRows<3>() * eigen.eigenvalues().cwiseInverse().asDiagonal() *
-      eigen.eigenvectors().transpose();
+  const Eigen::Matrix<double, 3, 9> gradientRows = eigen.eigenvectors().topRows<3>() *
+                                                   eigen.eigenvalues().cwiseInverse().asDiagonal() *
+                                                   eigen.eigenvectors().transpose();
   row.clear();
   Eigen::Vector3d sum = Eigen::Vector3d::Zero();
   for (uint32_t j : ring) {
@@ -77,15 +76,13 @@ double fitRow(const VolumeMesh& rest, uint32_t node, const std::vector<uint32_t>
     sum += g;
   }
   row.emplace_back(node, -sum);  // x_j - x_i: the node itself takes minus the others' sum
-  std::sort(row.begin(), row.end(),
-            [](const auto& a, const auto& b) { return a.first < b.first; });
+  std::sort(row.begin(), row.end(), [](const auto& a, const auto& b) { return a.first < b.first; });
   return largest / smallest;
 }
 
 }  // namespace
 
-NodeGradientStencil quadraticFitStencil(const VolumeMesh& rest,
-                                        const NodeGradientStencil& fallback,
+NodeGradientStencil quadraticFitStencil(const VolumeMesh& rest, const NodeGradientStencil& fallback,
                                         GradientFitReport* report) {
   const uint32_t numNodes = rest.numNodes();
   const CompressedRows<uint32_t> neighbours = nodeNeighbours(rest);
@@ -132,7 +129,8 @@ NodeGradientStencil quadraticFitStencil(const VolumeMesh& rest,
       if (node < fallback.numNodes())
         for (uint32_t t = fallback.offsets[node]; t < fallback.offsets[node + 1]; ++t) {
           stencil.nodes.push_back(fallback.nodes[t]);
-          stencil.g.insert(stencil.g.end(), fallback.g.begin() + 3 * t, fallback.g.begin() + 3 * t + 3);
+          stencil.g.insert(stencil.g.end(), fallback.g.begin() + 3 * t,
+                           fallback.g.begin() + 3 * t + 3);
         }
     } else {
       ++counts.ringCounts[ringOf[node]];

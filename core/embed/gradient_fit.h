@@ -34,8 +34,7 @@ struct GradientFitReport {
   uint32_t fallbacks = 0;                     ///< nodes that kept the fallback's row
 };
 
-NodeGradientStencil quadraticFitStencil(const VolumeMesh& rest,
-                                        const NodeGradientStencil& fallback,
+NodeGradientStencil quadraticFitStencil(const VolumeMesh& rest, const NodeGradientStencil& fallback,
                                         GradientFitReport* report = nullptr);
 
 }  // namespace sculpt

@@ -15,8 +15,7 @@ std::optional<GradientScheme> parseGradientScheme(std::string_view name) {
   return std::nullopt;
 }
 
-NodeGradientStencil nodeGradientStencil(const VolumeMesh& rest, GradientScheme scheme,
-                                        double eps) {
+NodeGradientStencil nodeGradientStencil(const VolumeMesh& rest, GradientScheme scheme, double eps) {
   NodeGradientStencil average =
       nodeGradientStencil(rest, cellGradientOperator(rest), cellToNodeWeights(rest, eps));
   if (scheme == GradientScheme::Average) return average;

@@ -261,8 +261,9 @@ std::optional<SceneBuildPhase1> buildPhase1(const SceneSource& source,
   clock.lap("embed");
   BuildStage stencil(progress, 0.08, 0.09, "gradient stencil");
   if (!stencil.start()) return std::nullopt;
-  solid->stencil = nodeGradientStencil(geometry->cellMesh, cellGradientOperator(geometry->cellMesh),
-                                       cellToNodeWeights(geometry->cellMesh));
+  for (GradientScheme scheme : {GradientScheme::Average, GradientScheme::Fit})
+    geometry->gradientStencils[static_cast<size_t>(scheme)] =
+        nodeGradientStencil(geometry->cellMesh, scheme);
   clock.lap("stencil");
 
   // The control mesh for display, with the top layer pinned

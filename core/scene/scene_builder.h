@@ -27,6 +27,7 @@
 #include <Eigen/Core>
 
 #include "embed/deformation_gradients.h"
+#include "embed/gradient_scheme.h"
 #include "embed/embedding.h"
 #include "embed/solid_cell_mesh.h"
 #include "fem/material.h"
@@ -97,6 +98,11 @@ struct SceneGeometry {
   /// cells that are not hexahedra) and the embedding of restPositions in them.
   VolumeMesh cellMesh;
   Embedding embedding;
+  /// Node positions -> node gradients of cellMesh (Phong deformation), one per GradientScheme.
+  std::array<NodeGradientStencil, 2> gradientStencils;
+  const NodeGradientStencil& gradientStencil(GradientScheme scheme) const {
+    return gradientStencils[static_cast<size_t>(scheme)];
+  }
   /// Per cellMesh cell: the kind of its FEM element (kCellTricubic, kCellTrilinear,
   /// kCellPyramid) and the element's index in the FemMesh. The tetrahedra of a cell split around
   /// its centre belong to the pyramid element of the cell face they stand on.
@@ -120,7 +126,6 @@ struct SceneSolid {
   CellComplex control;       ///< the control mesh (cage or file), valid
   /// Centre nodes of the level-K cells (its `mesh` is empty: that is SceneGeometry::cellMesh).
   SolidCellMesh centres;
-  NodeGradientStencil stencil;  ///< node positions -> node gradients (Phong deformation)
   double cellSize = 0.0;        ///< cage cell side, or the mean control edge length
   /// The project the scene was built from (SceneSource::project), for its painted materials.
   std::shared_ptr<const Project> project;

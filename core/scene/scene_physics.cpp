@@ -295,7 +295,7 @@ void ScenePhysics::updateState() {
   model_->nodesFromControl(simulator_->positions() - model_->restControl(), displacement);
   femNodes_ = model_->mesh().restNodes + displacement;
   surfaceMap_->cellNodesFromDisplacement(displacement, nodes_);
-  applyNodeGradientStencil(solid_->stencil, nodes_, gradients_);
+  applyNodeGradientStencil(geometry_->gradientStencil(kDefaultGradientScheme), nodes_, gradients_);
   picker_.reset();
   // Strain energy density with the rotations of this state (as Simulator::elasticEnergy).
   ElasticKernel& elastic = model_->elastic();

@@ -31,7 +31,9 @@ struct SceneFrame {
   uint64_t version = 0;  ///< increases with every frame the controller publishes
   uint64_t sceneId = 0;  ///< the SceneGeometry it belongs to
   Points nodes;          ///< #cellMesh nodes by 3
-  std::vector<Eigen::Matrix3d> gradients;  ///< per cellMesh node (PhongGpuDeformer::setFrame)
+  /// Per cellMesh node (PhongGpuDeformer::setFrame), by kDefaultGradientScheme; a view showing
+  /// another scheme applies SceneGeometry::gradientStencil(scheme) to `nodes` itself.
+  std::vector<Eigen::Matrix3d> gradients;
   Points control;        ///< #control points by 3
   /// Per cellMesh cell, from its FEM element: mean Young's modulus (Pa), density (kg/m^3) and
   /// damping (kg/(m^3 s)), and strain energy density (J/m^3) in this state.

@@ -3,12 +3,13 @@
 // exact for rigid motions, the averaging kept where no ring qualifies, and rings that grow only
 // where the first one cannot determine a quadratic.
 
+#include "embed/gradient_fit.h"
+
 #include <gtest/gtest.h>
 
 #include <Eigen/Geometry>
 #include <cstdio>
 
-#include "embed/gradient_fit.h"
 #include "embed/gradient_scheme.h"
 #include "mesh/lattice_mesh.h"
 
@@ -25,7 +26,7 @@ Eigen::Vector3d quadraticMap(const Eigen::Vector3d& X) {
 Eigen::Matrix3d quadraticGradient(const Eigen::Vector3d& X) {
   Eigen::Matrix3d F;
   F << 1.1 + 0.7 * X.y(), 0.2 + 0.7 * X.x(), -0.8 * X.z(),  //
-      X.x(), 0.9 + 0.6 * X.z(), -0.3 + 0.6 * X.y(),          //
+      X.x(), 0.9 + 0.6 * X.z(), -0.3 + 0.6 * X.y(),         //
       0.1 + 0.3 * X.z(), -1.6 * X.y(), 1.2 + 0.3 * X.x();
   return F;
 }
@@ -74,12 +75,13 @@ TEST(GradientFit, ExactForQuadraticMapsAtEveryNodeBoundaryIncluded) {
     const NodeGradientStencil fit = quadraticFitStencil(
         lattice.mesh, nodeGradientStencil(lattice.mesh, GradientScheme::Average), &report);
     const double fitError = worstGradientError(lattice.mesh, fit);
-    const double averageError =
-        worstGradientError(lattice.mesh, nodeGradientStencil(lattice.mesh, GradientScheme::Average));
-    std::printf("[ measured ] %s: %u nodes, ring 1/2/3 %u/%u/%u, fallbacks %u; worst |F - grad phi| "
-                "fit %.2e, average %.2e\n",
-                lattice.name, lattice.mesh.numNodes(), report.ringCounts[1], report.ringCounts[2],
-                report.ringCounts[3], report.fallbacks, fitError, averageError);
+    const double averageError = worstGradientError(
+        lattice.mesh, nodeGradientStencil(lattice.mesh, GradientScheme::Average));
+    std::printf(
+        "[ measured ] %s: %u nodes, ring 1/2/3 %u/%u/%u, fallbacks %u; worst |F - grad phi| "
+        "fit %.2e, average %.2e\n",
+        lattice.name, lattice.mesh.numNodes(), report.ringCounts[1], report.ringCounts[2],
+        report.ringCounts[3], report.fallbacks, fitError, averageError);
     EXPECT_EQ(report.fallbacks, 0u) << lattice.name;
     EXPECT_LT(fitError, 1e-10) << lattice.name;
     // The averaging is first-order at the boundary: the fit is what makes the difference.
