@@ -55,6 +55,7 @@ class SceneView {
   size_t numTriangles() const { return geometry_ ? geometry_->triangles.size() / 3 : 0; }
   /// The deformer, for measurements (draw ratio) and tests.
   render::PhongGpuDeformer* deformer() { return deformer_.get(); }
+  const render::PhongGpuDeformer* deformer() const { return deformer_.get(); }
 
  private:
   void uploadDeformation(const DisplaySettings& display);

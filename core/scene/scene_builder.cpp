@@ -4,7 +4,7 @@
 #include <filesystem>
 #include <stdexcept>
 
-#include "embed/gradient_weights.h"
+#include "embed/gradient_fit.h"
 #include "embed/recomputed_normals.h"
 #include "embed/surface_cage.h"
 #include "io/control_mesh_json.h"
@@ -261,9 +261,12 @@ std::optional<SceneBuildPhase1> buildPhase1(const SceneSource& source,
   clock.lap("embed");
   BuildStage stencil(progress, 0.08, 0.09, "gradient stencil");
   if (!stencil.start()) return std::nullopt;
-  for (GradientScheme scheme : {GradientScheme::Average, GradientScheme::Fit})
-    geometry->gradientStencils[static_cast<size_t>(scheme)] =
-        nodeGradientStencil(geometry->cellMesh, scheme);
+  // The fit keeps the average's rows where it cannot fit: made from it, not anew.
+  const NodeGradientStencil& average =
+      geometry->gradientStencils[static_cast<size_t>(GradientScheme::Average)] =
+          nodeGradientStencil(geometry->cellMesh, GradientScheme::Average);
+  geometry->gradientStencils[static_cast<size_t>(GradientScheme::Fit)] =
+      quadraticFitStencil(geometry->cellMesh, average);
   clock.lap("stencil");
 
   // The control mesh for display, with the top layer pinned

@@ -1,6 +1,4 @@
-// The window driven like a person would: the real SculptApp, offscreen and
-// deterministic (simulation stepped once per frame), with mouse and keys fed through ImGui's IO.
-// It pulls the bunny, paints a stiff ear, extrudes a face of the cage and undoes it, checking the
+// The window driven like a person would (gui/sculpt_session.h). It pulls the bunny, paints a stiff ear, extrudes a face of the cage and undoes it, checking the
 // effect of each step on the scene and on the project. With SCULPT_SESSION_IMAGES set to a
 // folder, each step's screenshot is written there (the README's images come from this test).
 
@@ -27,9 +25,8 @@
 #include "mesh/validation.h"
 #include "project/autosave.h"
 #include "project/project_file.h"
+#include "gui/sculpt_session.h"
 #include "sculpt/sculpt_app.h"
-#include "support/gl_context.h"
-#include "support/scratch_directory.h"
 #include "tools/session_script.h"
 
 namespace sculpt::app {
@@ -57,91 +54,6 @@ Eigen::Vector3d bestFaceCentre(
   }
   return centre;
 }
-
-struct Pointer {
-  float x = -1e6f, y = -1e6f;  // window coordinates; far away: not over the view
-  bool left = false, ctrl = false, shift = false;
-  int key = -1;  // held this frame
-};
-
-class SculptSession : public ::testing::Test {
- protected:
-  void SetUp() override {
-    ASSERT_NE(std::getenv("DISPLAY"), nullptr) << "no X display: run under xvfb-run";
-    ASSERT_TRUE(glfwInit());
-    window_ = sculpt::testing::hiddenGlWindow(1280, 800);
-    ASSERT_NE(window_, nullptr);
-    if (const char* images = std::getenv("SCULPT_SESSION_IMAGES")) images_ = images;
-  }
-  // The application on `scene` (empty: the default bunny), as `sculpt --headless` would run it.
-  void open(const std::string& scene = {}, bool headless = true) {
-    app_.reset();
-    Options options;
-    options.headless = headless;
-    options.width = 1280, options.height = 800;
-    options.scene = scene;
-    app_ = std::make_unique<SculptApp>(window_, options, std::chrono::steady_clock::now(),
-                                       LoadedPreferences{}, folder_ / "preferences.json");
-    app_->setInputHook([this](ImGuiIO& io, int) {
-      io.MousePos = ImVec2(pointer_.x, pointer_.y);
-      io.MouseDown[0] = pointer_.left;
-      io.KeyCtrl = pointer_.ctrl;
-      io.KeyShift = pointer_.shift;
-      for (bool& down : io.KeysDown) down = false;
-      if (pointer_.key >= 0) io.KeysDown[pointer_.key] = true;
-    });
-  }
-  void TearDown() override {
-    app_.reset();
-    if (window_) glfwDestroyWindow(window_);
-    glfwTerminate();
-  }
-
-  void frames(int count, const std::string& screenshot = {}) {
-    for (int k = 0; k < count; ++k) {
-      const bool last = k + 1 == count;
-      app_->headlessFrame(last && !screenshot.empty() && !images_.empty()
-                              ? (fs::path(images_) / screenshot).string()
-                              : std::string());
-    }
-  }
-  // Window coordinates of a world point in the 3D view.
-  ImVec2 screen(const Eigen::Vector3d& world) const {
-    const ViewRect view = app_->viewRect();
-    const int w = static_cast<int>(view.max.x - view.min.x), h = static_cast<int>(view.max.y - view.min.y);
-    const glm::vec3 p = app_->camera().project(glm::vec3(world.x(), world.y(), world.z()), w, h);
-    return ImVec2(view.min.x + p.x, view.min.y + p.y);
-  }
-  // A drag from `from` by (dx, dy) pixels over `steps` frames, holding the button at the end.
-  void drag(ImVec2 from, float dx, float dy, int steps) {
-    pointer_.x = from.x, pointer_.y = from.y;
-    frames(1);  // hover: the depth under the cursor is read
-    pointer_.left = true;
-    for (int k = 1; k <= steps; ++k) {
-      pointer_.x = from.x + dx * static_cast<float>(k) / static_cast<float>(steps);
-      pointer_.y = from.y + dy * static_cast<float>(k) / static_cast<float>(steps);
-      frames(1);
-    }
-  }
-  void release() {
-    pointer_.left = false;
-    frames(1);
-  }
-  void press(int key, bool ctrl) {
-    pointer_.key = key, pointer_.ctrl = ctrl;
-    frames(1);
-    pointer_.key = -1, pointer_.ctrl = false;
-    frames(1);
-  }
-  const SceneGeometry& geometry() const { return *app_->sceneView().geometry(); }
-
-  GLFWwindow* window_ = nullptr;
-  test::ScratchDirectory scratch_{"sculpt_session"};  // preferences, recovery and saved files
-  const fs::path& folder_ = scratch_.path();
-  std::string images_;
-  std::unique_ptr<SculptApp> app_;
-  Pointer pointer_;
-};
 
 TEST_F(SculptSession, PullPaintAStiffEarExtrudeAndUndo) {
   open();

@@ -88,6 +88,15 @@ TEST(SessionScript, MissingFileIsAFileError) {
   EXPECT_THROW(loadSessionScript("/nonexistent/dir/script.json"), FileError);
 }
 
+TEST(SessionScript, TheBundledScriptsParse) {
+  // The scripts the docs and benchmarks replay; a format change must keep them readable.
+  for (const char* name : {"bunny_pull.json", "bunny_bend.json"}) {
+    const SessionScript script =
+        loadSessionScript(std::string(SCULPT_SOURCE_DIR "/assets/scripts/") + name);
+    EXPECT_FALSE(script.events.empty()) << name;
+  }
+}
+
 }  // namespace
 }  // namespace sculpt
 
