@@ -142,6 +142,13 @@ SurfaceMesh boxSurface(const Eigen::Vector3d& low, const Eigen::Vector3d& high) 
   return surface;
 }
 
+/// Root-mean-square distance between the rows of `exact` and the positions of `out`.
+double rmsDistance(const Points& exact, const SurfaceMesh& out) {
+  EXPECT_EQ(out.positions.rows(), exact.rows());
+  if (out.positions.rows() != exact.rows()) return INFINITY;
+  return std::sqrt((out.positions - exact).rowwise().squaredNorm().mean());
+}
+
 double maxRowDistance(const Points& a, const Points& b) {
   EXPECT_EQ(a.rows(), b.rows());
   if (a.rows() != b.rows()) return INFINITY;
@@ -311,13 +318,8 @@ TEST_F(DeformCliTest, PhongBeatsLinearOnABend) {
   const SurfaceMesh surface = sphereSurface({0.5, 0.5, 0.5}, 0.35, 16, 24);
   writeScene(unitLattice(), surface, bend);
   const Points exact = mappedPoints(surface.positions, bend);
-  const auto rmsError = [&](const SurfaceMesh& out) -> double {
-    EXPECT_EQ(out.positions.rows(), exact.rows());
-    if (out.positions.rows() != exact.rows()) return INFINITY;
-    return std::sqrt((out.positions - exact).rowwise().squaredNorm().mean());
-  };
-  const double linear = rmsError(deform("--method linear", "linear.obj"));
-  const double phong = rmsError(deform("--method phong", "phong.obj"));
+  const double linear = rmsDistance(exact, deform("--method linear", "linear.obj"));
+  const double phong = rmsDistance(exact, deform("--method phong", "phong.obj"));
   EXPECT_GT(linear, 1e-4);  // the bend is not affine
   EXPECT_LT(phong, 0.5 * linear) << "phong " << phong << " linear " << linear;
 }
@@ -328,13 +330,8 @@ TEST_F(DeformCliTest, FitGradientsBeatTheAverageNearTheMeshBoundary) {
   const SurfaceMesh surface = sphereSurface({0.5, 0.5, 0.5}, 0.48, 16, 24);
   writeScene(unitLattice(), surface, bend);
   const Points exact = mappedPoints(surface.positions, bend);
-  const auto rmsError = [&](const SurfaceMesh& out) -> double {
-    EXPECT_EQ(out.positions.rows(), exact.rows());
-    if (out.positions.rows() != exact.rows()) return INFINITY;
-    return std::sqrt((out.positions - exact).rowwise().squaredNorm().mean());
-  };
-  const double average = rmsError(deform("--gradients average", "average.obj"));
-  const double fit = rmsError(deform("--gradients fit", "fit.obj"));
+  const double average = rmsDistance(exact, deform("--gradients average", "average.obj"));
+  const double fit = rmsDistance(exact, deform("--gradients fit", "fit.obj"));
   std::printf("[ measured ] rms error near the boundary: average %.3e, fit %.3e (%.1fx)\n", average,
               fit, average / fit);
   EXPECT_LT(fit, 0.5 * average);

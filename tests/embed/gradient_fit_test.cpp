@@ -11,7 +11,10 @@
 #include <cstdio>
 
 #include "embed/gradient_scheme.h"
+#include "embed/solid_cell_mesh.h"
+#include "io/control_mesh_json.h"
 #include "mesh/lattice_mesh.h"
+#include "subdiv/mj_refiner.h"
 
 namespace sculpt {
 namespace {
@@ -87,6 +90,25 @@ TEST(GradientFit, ExactForQuadraticMapsAtEveryNodeBoundaryIncluded) {
     // The averaging is first-order at the boundary: the fit is what makes the difference.
     EXPECT_GT(averageError, 1e-2) << lattice.name;
   }
+}
+
+TEST(GradientFit, ExactForQuadraticMapsOnTheSubdividedSolidWithItsCentreNodes) {
+  // The window's cell mesh: level-K hexahedra of a refined control mesh with pyramids, whose apex
+  // cells are tetrahedra around a centre node.
+  const CellComplex control = loadControlMeshJson(SCULPT_SOURCE_DIR "/assets/mixed.json");
+  const auto subdivision = subdivide(control, 2);
+  ASSERT_TRUE(subdivision);
+  const SolidCellMesh solid = solidCellMesh(subdivision->finest(), subdivision->finestTopology());
+  ASSERT_GT(solid.mesh.numNodes(), solid.numVertices) << "the mesh has centre nodes";
+  GradientFitReport report;
+  const NodeGradientStencil fit = quadraticFitStencil(
+      solid.mesh, nodeGradientStencil(solid.mesh, GradientScheme::Average), &report);
+  std::printf("[ measured ] mixed.json level 2: %u nodes (%u centres), ring 1/2/3 %u/%u/%u, "
+              "fallbacks %u\n",
+              solid.mesh.numNodes(), solid.mesh.numNodes() - solid.numVertices,
+              report.ringCounts[1], report.ringCounts[2], report.ringCounts[3], report.fallbacks);
+  EXPECT_EQ(report.fallbacks, 0u);
+  EXPECT_LT(worstGradientError(solid.mesh, fit), 1e-9);
 }
 
 TEST(GradientFit, RingsGrowOnlyWhereTheFirstCannotDetermineAQuadratic) {
