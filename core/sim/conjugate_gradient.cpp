@@ -4,9 +4,10 @@
 
 namespace sculpt {
 
-CgResult conjugateGradient(const LinearOperator& A, const LinearOperator& preconditioner,
-                           const Eigen::VectorXd& b, Eigen::VectorXd& x, double tolerance,
-                           int maxIterations) {
+namespace {
+
+CgResult solve(const LinearOperator& A, const LinearOperator& preconditioner,
+               const Eigen::VectorXd& b, Eigen::VectorXd& x, double tolerance, int maxIterations) {
   CgResult result;
   const double bNorm = b.norm();
   if (!std::isfinite(bNorm)) return result;
@@ -46,6 +47,25 @@ CgResult conjugateGradient(const LinearOperator& A, const LinearOperator& precon
     p = z + (rzNext / rz) * p;
     rz = rzNext;
   }
+  return result;
+}
+
+}  // namespace
+
+CgResult conjugateGradient(const LinearOperator& A, const LinearOperator& preconditioner,
+                           const Eigen::VectorXd& b, Eigen::VectorXd& x, double tolerance,
+                           int maxIterations) {
+  // Solved for b / 2^k with 2^k near max |b|: |b|^2 cannot overflow (forces of 1e200 N), and a
+  // power-of-two scale changes no bit of the iterates, so results are those of the plain solve.
+  const double largest = b.size() ? b.cwiseAbs().maxCoeff() : 0.0;
+  if (!std::isfinite(largest) || largest == 0.0)
+    return solve(A, preconditioner, b, x, tolerance, maxIterations);
+  int exponent = 0;
+  std::frexp(largest, &exponent);
+  if (x.size() == b.size()) x = std::ldexp(1.0, -exponent) * x;
+  const CgResult result =
+      solve(A, preconditioner, std::ldexp(1.0, -exponent) * b, x, tolerance, maxIterations);
+  x *= std::ldexp(1.0, exponent);
   return result;
 }
 

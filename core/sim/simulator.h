@@ -54,6 +54,7 @@ struct StaticReport {
   bool converged = false;
   int newtonIterations = 0;
   int cgIterations = 0;
+  int loadSteps = 0;    ///< 0: the whole load at once; otherwise the load steps it took
   double residual = 0;  ///< relative force residual |g| / |f_ext| on the free coordinates
   std::string message;
 };
@@ -91,7 +92,10 @@ class Simulator {
 
   /// Advances by settings().timeStep.
   StepReport step();
-  /// Moves the free control points to equilibrium under the loads (velocities set to zero).
+  /// Moves the free control points to equilibrium under the loads (velocities set to zero):
+  /// Newton with a line search on the force residual, and load steps where the whole load at
+  /// once fails. Converged: the residual is at most `tolerance` of the load, or at the rounding
+  /// floor of the elastic forces (for loads tiny against the stiffness; said in the message).
   StaticReport solveStatic(double tolerance = 1e-9, int maxNewtonIterations = 40);
 
   double kineticEnergy() const;  ///< 1/2 v^T M~ v
@@ -124,6 +128,14 @@ class Simulator {
   double systemLoadEnergy(const Points& x);
   // scratchNodes_ = A x (reused while x equals scratchControl_).
   void refreshNodes(const Points& x);
+  enum class NewtonOutcome { Converged, Failed };
+  /// Static Newton iterations at the current load factor until the residual is <= target (N),
+  /// after at least one step unless it is <= tight (the tolerance without the rounding floor).
+  NewtonOutcome newtonToEquilibrium(double target, double tight, int maxIterations,
+                                    StaticReport& report);
+  Points loadGradient(const Points& x);  ///< the loads' gradient alone, free coordinates
+  /// The force residual below which the elastic forces are rounding (N).
+  double elasticRoundingFloor();
   void refreshFreeDofs();
 
   FemModel& model_;
@@ -132,6 +144,8 @@ class Simulator {
   std::unique_ptr<InertiaForm> inertia_;
   std::unique_ptr<DampingForm> damping_;
   FormList loads_;
+  /// Multiplies the loads' gradient and Hessian: the load steps of solveStatic (1 otherwise).
+  double loadFactor_ = 1.0;
   std::unique_ptr<SystemPreconditioner> preconditioner_;
 
   Points position_, velocity_, previous_;  // previous_: p(t - dt) of the paper's scheme

@@ -6,6 +6,7 @@
 
 #include <array>
 #include <cmath>
+#include <cstdio>
 #include <cstdlib>
 #include <filesystem>
 #include <map>
@@ -148,6 +149,54 @@ TEST_F(FemCliTest, StaticBeamTipForceWritesDisplacementsAndIsLinear) {
   EXPECT_NEAR(twice / once, 2.0, 2e-6);
   // A small load hardly rotates anything, so co-rotated and linear nearly agree.
   EXPECT_NEAR(corotated / once, 1.0, 0.01);
+}
+
+TEST_F(FemCliTest, StaticConvergesAtEveryLoadFromANanoNewtonToAKiloNewton) {
+  // E = 2e5 Pa: the tip deflection goes from 1e-11 m (the elastic forces' rounding is then a
+  // third of the load) to three quarters of the beam's length (large rotations).
+  const std::string stiffness = "--E 2e5";
+  std::map<double, double> tip;
+  for (double load : {1e-9, 1e-6, 1e-3, 1.0, 1e3}) {
+    tip[load] = staticBeam(-load, stiffness, path("load.vtk"));
+    std::printf("[ measured ] tip load %g N: max displacement %.9g m\n", load, tip[load]);
+  }
+  // Small loads: linear in the load to 1e-5, down to the smallest.
+  for (double load : {1e-9, 1e-6})
+    EXPECT_NEAR(tip[load] / load, tip[1e-3] / 1e-3, 1e-5 * tip[1e-3] / 1e-3) << load;
+  // 1 kN: far beyond the linear range, the beam bends and stiffens (an elastica shortens its
+  // lever arm), so it moves less than linear scaling says (13 m), but still most of its length.
+  EXPECT_LT(tip[1e3], 0.7 * 1e6 * tip[1e-3]);
+  EXPECT_GT(tip[1e3], 5.0);
+  const CliResult big = run("static " + quote(kAssets + "beam.json") + " --trilinear " + kBeamRoot +
+                            " --force " + kBeamTip + " 0,-1e3,0 " + stiffness + " --out " +
+                            quote(path("big.vtk")));
+  EXPECT_NE(big.err.find("load steps"), std::string::npos) << big.err;
+  EXPECT_LE(number(keyValues(big.lastLine()).at(2).second), 1e-9) << big.lastLine();
+}
+
+TEST_F(FemCliTest, StaticSaysWhenTheLoadCannotMoveTheSolid) {
+  // E = 1e308 Pa: the displacement is below what the positions can represent. Not an answer.
+  const CliResult result = run("static " + quote(kAssets + "beam.json") + " --trilinear " +
+                               kBeamRoot + " --force " + kBeamTip + " 0,-1,0 --E 1e308 --out " +
+                               quote(path("stiff.vtk")));
+  EXPECT_EQ(result.exitCode, 1) << result.err;
+  EXPECT_NE(result.err.find("too small for this stiffness"), std::string::npos) << result.err;
+}
+
+TEST_F(FemCliTest, SimulateRefusesLoadsBeyondDoublePrecision) {
+  // 1e200 N: the work of the load overflows. The step is refused with a sentence (exit 1), not
+  // reported as a motionless success.
+  const CliResult result =
+      run("simulate " + quote(kAssets + "block3.json") + " --levels 1 --force 0,0,0,4,4,4 " +
+          "1e200,0,0 --dt 0.01 --steps 3 --out " + quote(path("huge.vtk")));
+  EXPECT_EQ(result.exitCode, 1) << result.err;
+  EXPECT_NE(result.err.find("the loads are too large"), std::string::npos) << result.err;
+  // A large but representable load still runs.
+  const CliResult large =
+      run("simulate " + quote(kAssets + "block3.json") + " --levels 1 --force 0,0,0,4,4,4 " +
+          "1e30,0,0 --dt 0.01 --steps 3 --out " + quote(path("large.vtk")));
+  EXPECT_EQ(large.exitCode, 0) << large.err;
+  EXPECT_GT(numbers(keyValues(large.lastLine())).at("max_displacement"), 1e20);
 }
 
 TEST_F(FemCliTest, StaticBadInputIsOneErrorLine) {
