@@ -147,6 +147,7 @@ std::vector<uint64_t> findFrames(const NumberedPath& pattern, const std::string&
 }
 
 /// Throws FileError unless `deformed` has the nodes and cells of `rest`.
+/// `rest` as its file has it (before any re-orientation): a frame lists the same cells.
 void checkSameMesh(const VolumeMesh& rest, const VolumeMesh& deformed, const std::string& restPath,
                    const std::string& deformedPath) {
   if (deformed.numNodes() != rest.numNodes())
@@ -259,7 +260,20 @@ int deformCommand(const CliArgs& args, std::string& file) {
   // Inputs: the rest mesh, the surface, the frames (before any precompute, so that a bad
   // pattern is reported at once)
   file = options.restPath;
-  VolumeMesh rest = readVolumeMesh(options.restPath);
+  // Mirrored cells (node orders of the other orientation convention) are re-oriented: the
+  // interpolation is the same map either way. Degenerate and folded cells are still refused.
+  const VolumeMesh restAsRead = readVolumeMesh(options.restPath, CellShapeCheck::OrientationFree);
+  VolumeMesh rest = restAsRead;
+  const uint32_t mirrored = orientCellsPositively(rest);
+  if (mirrored > 0) {
+    // Mirrored cells are a convention; cells inverted by a fold overlap their neighbours.
+    if (const std::string fold = findFoldedFace(rest); !fold.empty())
+      throw FileError(options.restPath + ": " + fold);
+  }
+  if (mirrored > 0)
+    std::cerr << "note: " << options.restPath << ": " << mirrored << " of " << rest.numCells()
+              << " cells are negatively oriented; they are used with their node order "
+                 "reversed\n";
   file = options.surfacePath;
   const LoadedSurface loaded = readSurfaceFile(options.surfacePath);
   const SurfaceMesh& surface = loaded.surface();
@@ -324,7 +338,7 @@ int deformCommand(const CliArgs& args, std::string& file) {
     // A simulation frame may contain inverted cells; the deformer copes, so only its structure
     // is checked (and below, that it has the rest mesh's nodes and cells).
     const VolumeMesh deformed = readVolumeMesh(deformedPath, CellShapeCheck::Skipped);
-    checkSameMesh(deformer.rest(), deformed, options.restPath, deformedPath);
+    checkSameMesh(restAsRead, deformed, options.restPath, deformedPath);
     deformer.setFrame(deformed.positions, options.method);
     result.positions = deformer.positions();
     if (hasNormals) {

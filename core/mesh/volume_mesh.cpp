@@ -47,7 +47,7 @@ double hexCornerJacobian(const VolumeMesh& mesh, std::span<const uint32_t> nodes
   return determinant(axis[0], axis[1], axis[2]);
 }
 
-std::string hexahedronProblem(const VolumeMesh& mesh, uint32_t cell) {
+std::string hexahedronProblem(const VolumeMesh& mesh, uint32_t cell, bool mirroredAllowed) {
   const std::span<const uint32_t> nodes = mesh.cells.row(cell);
   int negative = 0;
   int firstBad = -1;
@@ -60,7 +60,7 @@ std::string hexahedronProblem(const VolumeMesh& mesh, uint32_t cell) {
       firstBadValue = det;
     }
   }
-  if (firstBad < 0) return {};
+  if (firstBad < 0 || (mirroredAllowed && negative == 8)) return {};
   const std::string where = " at corner " + std::to_string(firstBad);
   const std::string value = "trilinear Jacobian determinant " + shortNumber(firstBadValue) + where;
   const std::string label = cellLabel(cell, "hexahedron") + ": ";
@@ -155,14 +155,87 @@ std::string findVolumeMeshProblem(const VolumeMesh& mesh, CellShapeCheck shapes)
     }
     if (shapes == CellShapeCheck::Skipped) continue;
     if (nodes.size() == 8) {
-      if (std::string problem = hexahedronProblem(mesh, cell); !problem.empty()) return problem;
+      if (std::string problem =
+              hexahedronProblem(mesh, cell, shapes == CellShapeCheck::OrientationFree);
+          !problem.empty())
+        return problem;
       continue;
     }
     const double volume = tetrahedronSignedVolume(mesh, cell);
-    if (!(volume > 0.0)) {
+    if (shapes == CellShapeCheck::OrientationFree ? !(std::abs(volume) > 0.0) : !(volume > 0.0)) {
       return cellLabel(cell, "tetrahedron") + ": " + (volume < 0.0 ? "inverted" : "degenerate") +
              ", signed volume " + shortNumber(volume);
     }
+  }
+  return {};
+}
+
+uint32_t orientCellsPositively(VolumeMesh& mesh) {
+  uint32_t reordered = 0;
+  for (uint32_t cell = 0; cell < mesh.numCells(); ++cell) {
+    uint32_t* nodes = mesh.cells.values.data() + mesh.cells.offsets[cell];
+    const uint32_t count = mesh.cells.rowSize(cell);
+    if (count == 4 && tetrahedronSignedVolume(mesh, cell) < 0.0) {
+      std::swap(nodes[1], nodes[2]);
+      ++reordered;
+    } else if (count == 8) {
+      const std::span<const uint32_t> row(nodes, 8);
+      bool allNegative = true;
+      for (int corner = 0; corner < 8 && allNegative; ++corner)
+        allNegative = hexCornerJacobian(mesh, row, corner) < 0.0;
+      if (allNegative) {
+        std::swap_ranges(nodes, nodes + 4, nodes + 4);
+        ++reordered;
+      }
+    }
+  }
+  return reordered;
+}
+
+std::string findFoldedFace(const VolumeMesh& mesh) {
+  static constexpr int kTetFaces[4][3] = {{1, 2, 3}, {0, 2, 3}, {0, 1, 3}, {0, 1, 2}};
+  static constexpr int kHexFaces[6][4] = {{0, 1, 2, 3}, {4, 5, 6, 7}, {0, 1, 5, 4},
+                                          {1, 2, 6, 5}, {2, 3, 7, 6}, {3, 0, 4, 7}};
+  // Faces keyed by their sorted node ids (4 slots; a triangle's last is UINT32_MAX).
+  using Key = std::array<uint32_t, 4>;
+  std::vector<std::pair<Key, uint32_t>> faces;
+  for (uint32_t cell = 0; cell < mesh.numCells(); ++cell) {
+    const auto nodes = mesh.cells.row(cell);
+    const bool tet = nodes.size() == 4;
+    for (int f = 0; f < (tet ? 4 : 6); ++f) {
+      Key key{UINT32_MAX, UINT32_MAX, UINT32_MAX, UINT32_MAX};
+      for (int k = 0; k < (tet ? 3 : 4); ++k)
+        key[static_cast<size_t>(k)] = nodes[static_cast<size_t>(tet ? kTetFaces[f][k] : kHexFaces[f][k])];
+      std::sort(key.begin(), key.end());
+      faces.emplace_back(key, cell);
+    }
+  }
+  std::sort(faces.begin(), faces.end());
+  const auto centroid = [&](std::span<const uint32_t> ids) {
+    Eigen::Vector3d sum = Eigen::Vector3d::Zero();
+    for (uint32_t id : ids) sum += mesh.positions.row(id).transpose();
+    return Eigen::Vector3d(sum / static_cast<double>(ids.size()));
+  };
+  for (size_t i = 0; i + 1 < faces.size(); ++i) {
+    if (faces[i].first != faces[i + 1].first) continue;
+    const Key& key = faces[i].first;
+    const uint32_t a = faces[i].second, b = faces[i + 1].second;
+    const size_t count = key[3] == UINT32_MAX ? 3 : 4;
+    const std::span<const uint32_t> ids(key.data(), count);
+    // The face's plane: least-squares normal through its centroid (the cross product of the
+    // diagonals for a quadrilateral, of two edges for a triangle; the node order does not matter
+    // for the side test below).
+    const Eigen::Vector3d p0 = mesh.positions.row(ids[0]).transpose();
+    const Eigen::Vector3d p1 = mesh.positions.row(ids[1]).transpose();
+    const Eigen::Vector3d p2 = mesh.positions.row(ids[2]).transpose();
+    const Eigen::Vector3d normal = (p1 - p0).cross(p2 - p0);
+    const Eigen::Vector3d centre = centroid(ids);
+    const double sideA = normal.dot(centroid(mesh.cells.row(a)) - centre);
+    const double sideB = normal.dot(centroid(mesh.cells.row(b)) - centre);
+    if (sideA * sideB > 0.0)
+      return cellLabel(a, mesh.cells.rowSize(a) == 4 ? "tetrahedron" : "hexahedron") + " and " +
+             cellLabel(b, mesh.cells.rowSize(b) == 4 ? "tetrahedron" : "hexahedron") +
+             " lie on the same side of their shared face: the mesh is folded (inverted cells)";
   }
   return {};
 }

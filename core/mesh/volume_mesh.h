@@ -53,7 +53,22 @@ void splitWedge(VolumeMesh& mesh, const std::array<uint32_t, 6>& nodes);
 /// Whether findVolumeMeshProblem checks cell shapes (inverted tetrahedra, folded hexahedra).
 /// Rest meshes need them; a deformed simulation frame may legitimately contain inverted cells
 /// and is checked for structure only (finite coordinates, ids in range, no repeated node).
-enum class CellShapeCheck { Required, Skipped };
+/// OrientationFree checks shapes but accepts cells whose node order is mirrored as a whole (a
+/// tetrahedron of negative volume, a hexahedron negative at all eight corners): conventions
+/// differ between programs; orientCellsPositively() then makes them positive.
+enum class CellShapeCheck { Required, Skipped, OrientationFree };
+
+/// Reorders the nodes of every mirrored cell (see CellShapeCheck::OrientationFree) so that it is
+/// positively oriented: a tetrahedron swaps nodes 1 and 2, a hexahedron its two quadrilaterals
+/// 0-3 and 4-7. Returns how many cells it reordered. The cells' shapes are unchanged.
+uint32_t orientCellsPositively(VolumeMesh& mesh);
+
+/// For a positively oriented mesh: the first pair of cells that lie on the same side of a face
+/// they share (the mesh folds over itself there, as when a node is pushed through its
+/// neighbours), as a sentence naming both cells, or an empty string. Cells of a conforming mesh
+/// lie on opposite sides of every shared face whatever their files' orientation convention was,
+/// so this tells a folded mesh from one whose cells were only mirrored.
+std::string findFoldedFace(const VolumeMesh& mesh);
 
 /// Signed volume of tetrahedron `cell` (det/6); positive for a correctly oriented cell.
 double tetrahedronSignedVolume(const VolumeMesh& mesh, uint32_t cell);

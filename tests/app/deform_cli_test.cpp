@@ -337,6 +337,47 @@ TEST_F(DeformCliTest, FitGradientsBeatTheAverageNearTheMeshBoundary) {
   EXPECT_LT(fit, 0.5 * average);
 }
 
+TEST_F(DeformCliTest, NegativelyOrientedAndMixedRestMeshesGiveTheSameSurface) {
+  // Other programs order cell nodes for the other orientation: every cell mirrored, or some.
+  const SurfaceMesh surface = sphereSurface({0.5, 0.5, 0.5}, 0.4, 12, 16);
+  for (bool hexahedra : {false, true}) {
+    const VolumeMesh positive = unitLattice(hexahedra);
+    writeScene(positive, surface, bend);
+    const SurfaceMesh reference = deform("", "positive.obj");
+    for (bool everyCell : {true, false}) {
+      SCOPED_TRACE(std::string(hexahedra ? "hexahedra" : "tetrahedra") +
+                   (everyCell ? ", every cell mirrored" : ", every other cell mirrored"));
+      VolumeMesh mirrored = positive;
+      for (uint32_t c = 0; c < mirrored.numCells(); c += everyCell ? 1 : 2) {
+        uint32_t* nodes = mirrored.cells.values.data() + mirrored.cells.offsets[c];
+        if (hexahedra)
+          std::swap_ranges(nodes, nodes + 4, nodes + 4);
+        else
+          std::swap(nodes[1], nodes[2]);
+      }
+      writeScene(mirrored, surface, bend);
+      CliResult result;
+      const SurfaceMesh out = deform("", "mirrored.obj", &result);
+      const uint32_t expected = everyCell ? positive.numCells() : (positive.numCells() + 1) / 2;
+      EXPECT_NE(result.err.find("note: " + path("rest.vtk") + ": " + std::to_string(expected) +
+                                " of " + std::to_string(positive.numCells()) +
+                                " cells are negatively oriented"),
+                std::string::npos)
+          << result.err;
+      EXPECT_LT(maxRowDistance(out.positions, reference.positions), 1e-12);
+      ASSERT_EQ(out.normals.rows(), reference.normals.rows());
+      EXPECT_LT(maxRowDistance(out.normals, reference.normals), 1e-12);
+    }
+  }
+  // A flat cell is still refused: re-orienting cannot give it a volume.
+  VolumeMesh flat = unitLattice(false);
+  flat.positions.row(flat.cells.row(0)[3]) = flat.positions.row(flat.cells.row(0)[0]) +
+                                             0.5 * (flat.positions.row(flat.cells.row(0)[1]) -
+                                                    flat.positions.row(flat.cells.row(0)[0]));
+  writeScene(flat, surface, bend);
+  expectBadInput(sceneArgs() + " --out " + quote(path("flat.obj")), "rest.vtk");
+}
+
 TEST_F(DeformCliTest, FrameSequence) {
   const VolumeMesh rest = unitLattice();
   const SurfaceMesh surface = sphereSurface({0.5, 0.5, 0.5}, 0.3);
