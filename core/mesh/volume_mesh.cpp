@@ -6,6 +6,8 @@
 #include <cstdio>
 #include <utility>
 
+#include "util/short_number.h"
+
 namespace sculpt {
 namespace {
 
@@ -15,12 +17,6 @@ Eigen::Vector3d nodePosition(const VolumeMesh& mesh, uint32_t node) {
 
 double determinant(const Eigen::Vector3d& a, const Eigen::Vector3d& b, const Eigen::Vector3d& c) {
   return a.dot(b.cross(c));
-}
-
-std::string shortNumber(double value) {
-  char buffer[32];
-  std::snprintf(buffer, sizeof buffer, "%.3g", value);
-  return buffer;
 }
 
 std::string cellLabel(uint32_t cell, const char* kind) {

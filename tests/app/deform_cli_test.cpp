@@ -181,6 +181,14 @@ class DeformCliTest : public test::CliFixture {
            " --surface " + quote(path("surface.obj"));
   }
 
+  // RMS distance to the exact bend of a sphere of `radius` in the unit lattice, deformed with
+  // `extra` options to `out`.
+  double bendError(double radius, const std::string& extra, const std::string& out) const {
+    const SurfaceMesh surface = sphereSurface({0.5, 0.5, 0.5}, radius, 16, 24);
+    writeScene(unitLattice(), surface, bend);
+    return rmsDistance(mappedPoints(surface.positions, bend), deform(extra, out));
+  }
+
   // Runs deform with `extra` options to `out`; expects success and returns the surface written.
   SurfaceMesh deform(const std::string& extra, const std::string& out,
                      CliResult* result = nullptr) const {
@@ -315,11 +323,8 @@ TEST_F(DeformCliTest, RecomputedNormalsKeepFlatShadingAndFileOrientation) {
 }
 
 TEST_F(DeformCliTest, PhongBeatsLinearOnABend) {
-  const SurfaceMesh surface = sphereSurface({0.5, 0.5, 0.5}, 0.35, 16, 24);
-  writeScene(unitLattice(), surface, bend);
-  const Points exact = mappedPoints(surface.positions, bend);
-  const double linear = rmsDistance(exact, deform("--method linear", "linear.obj"));
-  const double phong = rmsDistance(exact, deform("--method phong", "phong.obj"));
+  const double linear = bendError(0.35, "--method linear", "linear.obj");
+  const double phong = bendError(0.35, "--method phong", "phong.obj");
   EXPECT_GT(linear, 1e-4);  // the bend is not affine
   EXPECT_LT(phong, 0.5 * linear) << "phong " << phong << " linear " << linear;
 }
@@ -327,11 +332,8 @@ TEST_F(DeformCliTest, PhongBeatsLinearOnABend) {
 TEST_F(DeformCliTest, FitGradientsBeatTheAverageNearTheMeshBoundary) {
   // A sphere nearly touching the unit cube's faces: most of it lies in boundary cells, where the
   // averaged node gradients are one-sided and the fitted ones are not.
-  const SurfaceMesh surface = sphereSurface({0.5, 0.5, 0.5}, 0.48, 16, 24);
-  writeScene(unitLattice(), surface, bend);
-  const Points exact = mappedPoints(surface.positions, bend);
-  const double average = rmsDistance(exact, deform("--gradients average", "average.obj"));
-  const double fit = rmsDistance(exact, deform("--gradients fit", "fit.obj"));
+  const double average = bendError(0.48, "--gradients average", "average.obj");
+  const double fit = bendError(0.48, "--gradients fit", "fit.obj");
   std::printf("[ measured ] rms error near the boundary: average %.3e, fit %.3e (%.1fx)\n", average,
               fit, average / fit);
   EXPECT_LT(fit, 0.5 * average);
