@@ -91,6 +91,8 @@ class SculptApp {
   void syncScene();
   /// Holds a close of the window with unsaved changes and shows the prompt instead.
   void askBeforeClosingUnsaved();
+  /// After SIGTERM or SIGINT: writes the recovery file of unsaved work and closes, unasked.
+  void closeOnTerminationSignal();
   void handleInput(const ViewRect& view);
   // Tools (sculpt_tools.cpp)
   struct SurfaceHit {
@@ -178,6 +180,8 @@ class SculptApp {
   bool recoveryChecked_ = false;
   std::filesystem::path recoveryFile_;  ///< offered after a crash
   bool closeConfirmed_ = false;
+  std::optional<std::chrono::steady_clock::time_point> terminationNoted_;  ///< SIGTERM or SIGINT
+  int terminatedBy_ = 0;  ///< the signal the window closed for; 0: none
   enum class Capture { None, Materials, Pins };
   Capture pendingCapture_ = Capture::None;  ///< a stroke waiting for the simulation's state
   std::string pendingLabel_;

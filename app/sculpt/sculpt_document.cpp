@@ -1,7 +1,10 @@
 // SculptApp: the user's work as a document (document.h): starting it from a scene, opening,
-// saving, undo and redo, autosave and the recovery offer, the unsaved-changes prompt.
+// saving, undo and redo, autosave and the recovery offer, the unsaved-changes prompt, and the
+// recovery file written when SIGTERM or SIGINT ends the window.
 
 #include <algorithm>
+#include <chrono>
+#include <csignal>
 #include <fstream>
 #include <iostream>
 #include <sstream>
@@ -10,6 +13,7 @@
 #include "project/project_file.h"
 #include "scene/scene_file.h"
 #include "sculpt/sculpt_app.h"
+#include "sculpt/termination_signals.h"
 
 namespace sculpt::app {
 
@@ -174,7 +178,44 @@ void SculptApp::syncDocument() {
   const std::string title = "sculpt - " + d.title;
   if (title != lastTitle_ && !options_.headless) glfwSetWindowTitle(window_, title.c_str());
   lastTitle_ = title;
+  closeOnTerminationSignal();
   askBeforeClosingUnsaved();
+}
+
+void SculptApp::closeOnTerminationSignal() {
+  // Nobody may be there to answer a prompt (a logout, `kill`): keep the work, then close.
+  const int signal = terminationSignal();
+  if (signal == 0 || terminatedBy_ != 0) return;
+  const auto now = std::chrono::steady_clock::now();
+  if (!terminationNoted_) {
+    terminationNoted_ = now;
+    if (stroke_ != 0 && pendingCapture_ != Capture::None) {  // a paint or pin stroke still held
+      endToolStroke();
+      controller_->loop().requestEdits();
+    }
+  }
+  // A stroke's edit comes back from the simulation within a few steps: wait for it, not forever.
+  if (pendingCapture_ != Capture::None && now - *terminationNoted_ < std::chrono::seconds(2))
+    return;
+  terminatedBy_ = signal;
+  const char* name = signal == SIGINT ? "SIGINT" : "SIGTERM";
+  if (document_.dirty()) {
+    storeSettingsInProject();
+    const std::filesystem::path& recovery = document_.recoveryPath();
+    try {
+      std::error_code ignored;  // a folder that cannot be made fails the save, with its reason
+      if (recovery.has_parent_path())
+        std::filesystem::create_directories(recovery.parent_path(), ignored);
+      saveProject(document_.project(), recovery);
+      std::cerr << "sculpt: " << name << ": the unsaved work is kept in " << recovery.string()
+                << " (offered at the next start)\n";
+    } catch (const std::exception& error) {
+      std::cerr << "sculpt: " << name << ": the unsaved work could not be kept: " << error.what()
+                << '\n';
+    }
+  }
+  closeConfirmed_ = true;
+  glfwSetWindowShouldClose(window_, 1);
 }
 
 void SculptApp::askBeforeClosingUnsaved() {

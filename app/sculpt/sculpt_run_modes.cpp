@@ -18,6 +18,7 @@
 #include "sculpt/app_clock.h"
 #include "sculpt/draw_benchmark.h"
 #include "sculpt/sculpt_app.h"
+#include "sculpt/termination_signals.h"
 
 namespace sculpt::app {
 
@@ -96,6 +97,12 @@ int SculptApp::runWindow() {
   // short timeout, so that an idle window leaves the CPU to the builder and the simulation.
   int busyFrames = 3;
   double lastDeviceTime = glfwGetTime();
+  // SIGTERM and SIGINT close the window through the frame loop (closeOnTerminationSignal); an
+  // idle loop sees them within its wait timeout.
+  installTerminationHandlers();
+  struct DefaultTermination {
+    ~DefaultTermination() { restoreDefaultTermination(); }
+  } defaultTermination;
   while (!glfwWindowShouldClose(window_)) {
     if (options_.quitAfter > 0.0) {
       if (!quitClockStart && (firstFrameReported_ || !model_.status.build.error.empty()))
@@ -130,7 +137,7 @@ int SculptApp::runWindow() {
     glfwSwapBuffers(window_);
     busyFrames = sceneChanged_ || !model_.toasts.empty() ? 3 : busyFrames - 1;
   }
-  return 0;
+  return terminatedBy_ != 0 ? 128 + terminatedBy_ : 0;  // as a shell reports a signal's end
 }
 
 void SculptApp::headlessFrame(const std::string& screenshot) {

@@ -1,6 +1,7 @@
 #include "io/atomic_file.h"
 
 #include <fcntl.h>
+#include <signal.h>
 #include <sys/stat.h>
 #include <unistd.h>
 
@@ -46,12 +47,18 @@ class TemporaryFile {
   bool committed_ = false;
 };
 
+// ".<name>.tmp.": hidden, and with the writer's process id after it (temporaryNameFor).
+std::string temporaryPrefixFor(const std::filesystem::path& path) {
+  // Built with append(): GCC 12 warns falsely about `"." + std::string` (stringop-overflow).
+  std::string prefix(".");
+  prefix.append(path.filename().string()).append(".tmp.");
+  return prefix;
+}
+
 // A name no other writer in this or another process uses at the same time.
 std::filesystem::path temporaryNameFor(const std::filesystem::path& path) {
   static std::atomic<unsigned> counter{0};
-  // Built with append(): GCC 12 warns falsely about `"." + std::string` (stringop-overflow).
-  std::string name(".");
-  name.append(path.filename().string()).append(".tmp.");
+  std::string name = temporaryPrefixFor(path);
   name.append(std::to_string(::getpid())).append(".").append(std::to_string(counter++));
   std::filesystem::path result = path;
   result.replace_filename(name);
@@ -97,6 +104,32 @@ void writeFileAtomically(const std::filesystem::path& path, std::string_view con
     ::fsync(dirFd);
     ::close(dirFd);
   }
+}
+
+size_t removeStaleTemporaries(const std::filesystem::path& path) {
+  if (path.filename().empty()) return 0;
+  const std::string prefix = temporaryPrefixFor(path);
+  const std::filesystem::path dir = path.has_parent_path() ? path.parent_path() : ".";
+  std::error_code error;
+  std::filesystem::directory_iterator it(dir, error), end;
+  size_t removed = 0;
+  for (; !error && it != end; it.increment(error)) {
+    const std::string name = it->path().filename().string();
+    if (name.compare(0, prefix.size(), prefix) != 0) continue;
+    // "<pid>.<counter>" after the prefix; anything else is not one of ours.
+    const size_t dot = name.find('.', prefix.size());
+    const std::string pidText = name.substr(prefix.size(), dot - prefix.size());
+    if (dot == std::string::npos || pidText.empty() || pidText.size() > 9 ||
+        pidText.find_first_not_of("0123456789") != std::string::npos ||
+        name.find_first_not_of("0123456789", dot + 1) != std::string::npos)
+      continue;
+    const pid_t pid = static_cast<pid_t>(std::stol(pidText));
+    // kill(pid, 0) probes without sending: success or EPERM means the writer still runs.
+    if (pid == ::getpid() || ::kill(pid, 0) == 0 || errno == EPERM) continue;
+    std::error_code ignored;
+    if (std::filesystem::remove(it->path(), ignored)) ++removed;
+  }
+  return removed;
 }
 
 std::string readFile(const std::filesystem::path& path) {

@@ -3,6 +3,7 @@
 #include <stdexcept>
 #include <system_error>
 
+#include "io/atomic_file.h"
 #include "project/project_file.h"
 
 namespace sculpt {
@@ -15,6 +16,8 @@ std::filesystem::path recoveryPathFor(const std::filesystem::path& projectPath) 
 
 std::optional<std::filesystem::path> findRecovery(const std::filesystem::path& projectPath) {
   const std::filesystem::path recovery = recoveryPathFor(projectPath);
+  removeStaleTemporaries(projectPath);
+  removeStaleTemporaries(recovery);
   std::error_code error;
   if (!std::filesystem::is_regular_file(recovery, error)) return std::nullopt;
   const auto recoveryTime = std::filesystem::last_write_time(recovery, error);

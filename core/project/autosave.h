@@ -16,7 +16,9 @@ namespace sculpt {
 std::filesystem::path recoveryPathFor(const std::filesystem::path& projectPath);
 
 /// The recovery file of `projectPath` when it exists and is not older than the project (or the
-/// project file does not exist any more): what a crash left behind. nullopt otherwise.
+/// project file does not exist any more): what a crash left behind. nullopt otherwise. Called at
+/// start, it also removes the temporary files of both that a kill mid-save left behind
+/// (removeStaleTemporaries), so that they do not pile up beside the project.
 std::optional<std::filesystem::path> findRecovery(const std::filesystem::path& projectPath);
 
 class Autosave {
