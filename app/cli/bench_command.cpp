@@ -53,7 +53,8 @@ namespace {
 
 // Options of bench subdivide; bench fem takes these, the FEM options and its own.
 constexpr OptionSpec kOptions[] = {{"levels", true}, {"repeat", true}, {"help", false}};
-constexpr OptionSpec kFemBenchOptions[] = {{"integrator", true}, {"steps", true}, {"dt", true}};
+constexpr OptionSpec kFemBenchOptions[] = {
+    {"integrator", true}, {"model", true}, {"steps", true}, {"dt", true}};
 
 // Every option of either benchmark.
 std::vector<OptionSpec> allOptions() {

@@ -127,6 +127,11 @@ SimulationSettings parseIntegratorAndStep(const CliArgs& args, bool dtRequired) 
       throw UsageError("--integrator must be paper or implicit, got '" + *name + "'");
     settings.integrator = *integrator;
   }
+  if (auto name = args.value("model")) {
+    const auto model = parseElasticModel(*name);
+    if (!model) throw UsageError("--model must be barrier or corotated, got '" + *name + "'");
+    settings.elasticModel = *model;
+  }
   const std::optional<std::string> dt =
       dtRequired ? std::optional<std::string>(args.requiredValue("dt")) : args.value("dt");
   if (dt) {

@@ -27,9 +27,10 @@ CliScene cliSceneFor(const CliArgs& args, const std::string& file, const char* c
   if (args.has("levels") || args.has("level"))  // record spells it --level, as the window does
     settings.level = args.intValue(args.has("levels") ? "levels" : "level", 1, 1, 3);
   if (args.has("cage")) settings.cageCellsAcross = args.intValue("cage", 6, 1, 64);
-  if (args.has("integrator") || args.has("dt")) {
+  if (args.has("integrator") || args.has("dt") || args.has("model")) {
     const SimulationSettings given = parseIntegratorAndStep(args, false);
     if (args.has("integrator")) settings.integrator = given.integrator;
+    if (args.has("model")) settings.elasticModel = given.elasticModel;
     if (args.has("dt")) settings.timeStep = given.timeStep;
   }
   if (args.has("script")) scene.script = loadSessionScript(args.requiredValue("script"));

@@ -31,10 +31,10 @@
 namespace sculpt::cli {
 
 const char* const kSimulateUsage =
-    "  simulate CONTROL.json [FEM options] [--integrator paper|implicit] --dt S --steps N\n"
-    "           [--gravity] [--script SESSION.json] --out FINAL.vtk\n"
-    "  simulate SCENE [--levels K] [--cage N] [--integrator paper|implicit] [--dt S]\n"
-    "           [--steps N] [--script SESSION.json] --out FINAL.vtk\n"
+    "  simulate CONTROL.json [FEM options] [--integrator paper|implicit] [--model M] --dt S\n"
+    "           --steps N [--gravity] [--script SESSION.json] --out FINAL.vtk\n"
+    "  simulate SCENE [--levels K] [--cage N] [--integrator paper|implicit] [--model M]\n"
+    "           [--dt S] [--steps N] [--script SESSION.json] --out FINAL.vtk\n"
     "      Integrates N steps of S seconds from rest (0 < S <= 10, 1 <= N <= 10000000) with\n"
     "      the paper's central differences or backward Euler (implicit, the default).\n"
     "      --gravity adds g = (0, -9.81, 0) m/s^2: the y axis points up. A step that fails is\n"
@@ -44,7 +44,10 @@ const char* const kSimulateUsage =
     "      fails even with sub-steps (exit 1) and keeps the state before it. FINAL.vtk is the\n"
     "      deformed control mesh with the POINT_DATA vector 'displacement'. Last line:\n"
     "      steps=<completed> time=<s> max_displacement=<m> kinetic_energy=<J>\n"
-    "      elastic_energy=<J> substeps=<total> cg_iterations=<mean per step>.\n"
+    "      elastic_energy=<J> substeps=<total> cg_iterations=<mean per step> model=<M>\n"
+    "      min_jacobian=<smallest det F of a Gauss point> inverted_elements=<n>.\n"
+    "      --model barrier (default: co-rotated elasticity with an inversion barrier) or\n"
+    "      corotated (the paper's, without it).\n"
     "      --script replays a session script (docs/file-formats.md) while stepping: grabs,\n"
     "      inflation, paint and pins at their times; each event's start and end go to\n"
     "      stderr. With --script, --steps defaults to the script's length. A malformed\n"
@@ -184,11 +187,16 @@ StepTotals runSteps(int first, int steps, const std::string& out, Simulator& sim
 
 void printTotals(const StepTotals& totals, double time, double maxDisplacement,
                  Simulator& simulator) {
+  Points nodes;
+  simulator.model().nodesFromControl(simulator.positions(), nodes);
+  const ElasticKernel::Jacobians jacobians = simulator.model().elastic().jacobians(nodes);
   std::printf(
       "steps=%d time=%.9g max_displacement=%.9g kinetic_energy=%.9g elastic_energy=%.9g "
-      "substeps=%lld cg_iterations=%.1f\n",
+      "substeps=%lld cg_iterations=%.1f model=%s min_jacobian=%.6g inverted_elements=%u\n",
       totals.completed, time, maxDisplacement, simulator.kineticEnergy(), simulator.elasticEnergy(),
-      totals.substeps, static_cast<double>(totals.iterations) / std::max(1, totals.stepsRun()));
+      totals.substeps, static_cast<double>(totals.iterations) / std::max(1, totals.stepsRun()),
+      elasticModelName(simulator.settings().elasticModel), jacobians.min,
+      jacobians.invertedElements);
 }
 
 int stepsFor(const CliArgs& args, const std::optional<SessionScript>& script, double timeStep,
@@ -215,7 +223,10 @@ int simulateScene(const CliArgs& args, const std::string& file, const std::strin
             << physics->model().numControlPoints() << " control points\n";
   if (script) physics->playScript(*script);  // from the step after the build's first one, as the window
   Simulator& simulator = physics->simulator();
-  StepTotals totals = runSteps(2, steps, out, simulator, [&] { return physics->step(); }, {});
+  StepTotals totals = runSteps(2, steps, out, simulator, [&] { return physics->step(); }, [&] {
+    for (const std::string& line : physics->takeScriptLog())
+      std::cerr << "simulate: script: " << line << '\n';
+  });
   ++totals.completed;  // the build's first step
   sculpt::writeDeformedControlVtk(physics->model().control(), simulator.positions(), out);
   printTotals(totals, physics->simulatedTime(),
@@ -289,6 +300,7 @@ int runSimulateCommand(const std::vector<std::string>& args) {
   return runGuarded(file, [&] {
     std::vector<OptionSpec> specs = kFemOptions;
     specs.insert(specs.end(), {{"integrator", true},
+                               {"model", true},
                                {"dt", true},
                                {"steps", true},
                                {"gravity", false},

@@ -1,12 +1,13 @@
 #include "fem/elastic_kernel.h"
 
+#include <Eigen/LU>
+#include <algorithm>
 #include <array>
 
+#include "fem/linear_kernel.h"
 #include "fem/polar_rotation.h"
 #include "fem/quadrature.h"
-#include "fem/linear_kernel.h"
 #include "fem/tricubic_kernel.h"
-#include <algorithm>
 #include "subdiv/tricubic_patch.h"
 #include "util/parallel_for.h"
 
@@ -121,6 +122,59 @@ void ElasticKernel::resetRotations() {
   rotations_.assign(mesh_.numElements(), Eigen::Matrix3d::Identity());
 }
 
+void ElasticKernel::setModel(ElasticModel model, const InversionBarrier& barrier) {
+  model_ = model;
+  barrier_ = barrier;
+  barrierSlot_.clear();
+  barrierState_.clear();
+  barrierElements_ = 0;
+}
+
+ElasticKernel::Jacobians ElasticKernel::jacobians(const Points& nodes) const {
+  std::vector<BarrierRecord> records;
+  run(nodes, Mode::Gradient, nullptr, false, nullptr, nullptr, &records, true);
+  Jacobians result;
+  for (const BarrierRecord& record : records) {
+    size_t offset = 0;
+    for (uint32_t e : record.elements) {
+      const int points = e < mesh_.numTricubic() ? kTricubicGaussPoints : kLinearGaussPoints;
+      const int lanes = e < mesh_.numTricubic() ? 4 : 8;  // the kernels' layout of A
+      bool inverted = false;
+      for (int q = 0; q < points; ++q) {
+        const double* block = record.states.data() + offset + size_t(q / lanes) * 9 * size_t(lanes);
+        Eigen::Matrix3d A;
+        for (int rc = 0; rc < 9; ++rc) A(rc / 3, rc % 3) = block[rc * lanes + q % lanes];
+        const double J = A.determinant();
+        result.min = std::min(result.min, J);
+        if (J <= 0) {
+          ++result.invertedPoints;
+          inverted = true;
+        }
+      }
+      result.invertedElements += inverted ? 1 : 0;
+      offset += size_t(points) * 9;
+    }
+  }
+  return result;
+}
+
+void ElasticKernel::keepBarrierRecords(const std::vector<BarrierRecord>& records) {
+  barrierSlot_.assign(mesh_.numElements(), -1);
+  barrierState_.clear();
+  barrierElements_ = 0;
+  for (const BarrierRecord& record : records) {
+    size_t offset = 0;
+    for (uint32_t e : record.elements) {
+      const size_t size = e < mesh_.numTricubic() ? 9 * kTricubicGaussPoints : 9 * kLinearGaussPoints;
+      barrierSlot_[e] = int64_t(barrierState_.size());
+      barrierState_.insert(barrierState_.end(), record.states.begin() + ptrdiff_t(offset),
+                           record.states.begin() + ptrdiff_t(offset + size));
+      offset += size;
+      ++barrierElements_;
+    }
+  }
+}
+
 const uint32_t* ElasticKernel::elementNodes(uint32_t e) const {
   const uint32_t numTricubic = mesh_.numTricubic();
   return e < numTricubic
@@ -184,6 +238,12 @@ void ElasticKernel::updateGroupRotations(uint32_t first, int count, const double
 }
 
 void ElasticKernel::updateRotations(const Points& nodes) {
+  if (model_ == ElasticModel::Barrier) {  // the barrier's state needs every Gauss point
+    std::vector<BarrierRecord> records;
+    run(nodes, Mode::Gradient, nullptr, false, nullptr, rotations_.data(), &records);
+    keepBarrierRecords(records);
+    return;
+  }
   loadSource(nodes, true);
   parallelChunks(mesh_.numElements(), 256, [&](uint32_t begin, uint32_t end, unsigned) {
     alignas(64) double ue[4][kTricubicNodes * 3];
@@ -196,7 +256,10 @@ void ElasticKernel::updateRotations(const Points& nodes) {
 }
 
 void ElasticKernel::updateRotationsAndAddGradient(const Points& nodes, Points& gradient) {
-  run(nodes, Mode::Gradient, &gradient, false, nullptr, rotations_.data());
+  std::vector<BarrierRecord> records;
+  run(nodes, Mode::Gradient, &gradient, false, nullptr, rotations_.data(),
+      model_ == ElasticModel::Barrier ? &records : nullptr);
+  keepBarrierRecords(records);
 }
 
 double ElasticKernel::energy(const Points& nodes) const {
@@ -217,13 +280,17 @@ void ElasticKernel::addHessianProduct(const Points& dx, Points& result) const {
 }
 
 double ElasticKernel::run(const Points& x, Mode mode, Points* out, bool withEnergy,
-                          double* perElement, Eigen::Matrix3d* newRotations) const {
+                          double* perElement, Eigen::Matrix3d* newRotations,
+                          std::vector<BarrierRecord>* records, bool recordAll) const {
   const bool withRestTerm = mode == Mode::Gradient;  // x holds positions, not a direction
   const uint32_t numTricubic = mesh_.numTricubic();
   const uint32_t numElements = mesh_.numElements();
   const unsigned workers = std::min<unsigned>(workerCount(), std::max(1u, numElements / 32));
   if (out) workerBuffers_.resize(workers);
   std::vector<double> workerEnergy(workers, 0.0);
+  if (records) records->assign(workers, {});
+  const InversionBarrier* barrier = model_ == ElasticModel::Barrier ? &barrier_ : nullptr;
+  const bool hessianBarrier = mode == Mode::HessianProduct && !barrierSlot_.empty();
   // The kernels take displacements in gradient mode (x holds positions there).
   loadSource(x, withRestTerm);
   // Equal work per worker: a tricubic element costs about kTricubicCost linear ones.
@@ -247,6 +314,7 @@ double ElasticKernel::run(const Points& x, Mode mode, Points* out, bool withEner
       // are found together.
       alignas(64) double ueGroup[4][64 * 3];
       alignas(64) double ge[64 * 3];
+      alignas(64) double barrierRecord[9 * kTricubicGaussPoints];
       const uint32_t begin = chunkStart(worker);
       const uint32_t end = worker + 1 == workers ? numElements : chunkStart(worker + 1);
       for (uint32_t e = begin; e < end; ++e) {
@@ -261,6 +329,11 @@ double ElasticKernel::run(const Points& x, Mode mode, Points* out, bool withEner
         const Eigen::Matrix3d& R = rotations_[e];
         double* gradient = sink ? ge : nullptr;
         double elementEnergy;
+        BarrierArgs barrierArgs;
+        barrierArgs.settings = barrier;
+        if (records) barrierArgs.record = barrierRecord;
+        if (barrier && hessianBarrier && barrierSlot_[e] >= 0)
+          barrierArgs.state = barrierState_.data() + barrierSlot_[e];
         if (tricubic) {
           // The rest data (up to 5.6 KB per element) streams from memory once the model
           // outgrows the caches (K = 3): the kernel fetches the next element's while it
@@ -270,16 +343,24 @@ double ElasticKernel::run(const Points& x, Mode mode, Points* out, bool withEner
               tricubicRest_.data() + tricubicRestOffset_[e], tricubicAffine_[e],
               tricubicRest_.data() + restEnd,
               int(e + 1 < numTricubic ? tricubicRestOffset_[e + 2] - restEnd : 0));
-          elementEnergy = tricubicElementKernel(ue, packed, R, withRestTerm, withEnergy, gradient);
+          elementEnergy = tricubicElementKernel(ue, packed, R, withRestTerm, withEnergy, gradient,
+                                                &barrierArgs);
         } else {
           const size_t l = e - numTricubic;
           const LinearPacked packed{linearShapeGradient_.data() + l * 192,
                                     linearVolumeLambda_.data() + l * 8,
                                     linearVolumeMu_.data() + l * 8};
-          elementEnergy = linearElementKernel(ue, packed, R, withRestTerm, withEnergy, gradient);
+          elementEnergy = linearElementKernel(ue, packed, R, withRestTerm, withEnergy, gradient,
+                                              &barrierArgs);
         }
         energy += elementEnergy;
         if (perElement) perElement[e] = elementEnergy;
+        if (barrierArgs.record && (barrierArgs.active || recordAll)) {
+          BarrierRecord& record = (*records)[worker];
+          record.elements.push_back(e);
+          record.states.insert(record.states.end(), barrierRecord,
+                               barrierRecord + 9 * (tricubic ? kTricubicGaussPoints : kLinearGaussPoints));
+        }
         if (!sink) continue;
         scatterAddNodeRows(ge, elementNodes(e), int(count), *sink);
       }

@@ -9,10 +9,15 @@
 // co-rotational stiffness that ignores the derivative of R_e. Tricubic elements are evaluated
 // matrix-free with sum factorisation over the 4x4x4 tensor structure; linear elements use their
 // stored rest shape-function gradients. Element loops run on all worker threads.
+//
+// With the Barrier model (fem/elastic_model.h) every Gauss point also carries the inversion
+// barrier. Its Hessian is taken at the state of the last rotation update, like the rotations:
+// the update records R^T F of every element that has a point below the threshold.
 
 #include <Eigen/Core>
 #include <vector>
 
+#include "fem/elastic_model.h"
 #include "fem/fem_mesh.h"
 #include "fem/node_rows.h"
 
@@ -42,18 +47,42 @@ class ElasticKernel {
   /// result += H dx, H the Hessian of E (rotations fixed).
   void addHessianProduct(const Points& dx, Points& result) const;
 
+  /// The energy of the elements: Corotated until set (the Simulator sets its settings' model).
+  void setModel(ElasticModel model, const InversionBarrier& barrier = {});
+  ElasticModel model() const { return model_; }
+  const InversionBarrier& barrier() const { return barrier_; }
+  /// Elements with a Gauss point below the barrier's threshold at the last rotation update.
+  uint32_t barrierElements() const { return barrierElements_; }
+
+  /// det F over every Gauss point at `nodes` (any model): how compressed, or inverted, it is.
+  struct Jacobians {
+    double min = 1.0;               ///< the smallest det F (rest: 1; <= 0: inside out)
+    uint32_t invertedPoints = 0;    ///< Gauss points with det F <= 0
+    uint32_t invertedElements = 0;  ///< elements with such a point
+  };
+  Jacobians jacobians(const Points& nodes) const;
+
   const FemMesh& mesh() const { return mesh_; }
   /// Re-reads the Gauss-point materials (after FemMesh::gaussLame changed).
   void refreshMaterial();
 
  private:
   enum class Mode { Gradient, HessianProduct };
+  // One worker's recorded barrier states: element ids and their R^T F blocks.
+  struct BarrierRecord {
+    std::vector<uint32_t> elements;
+    std::vector<double> states;
+  };
   // Runs the element kernels; accumulates into `out` when non-null and returns the energy when
   // `withEnergy` (gradient mode only), storing each element's term in `perElement` if non-null.
   // With `newRotations` (gradient mode; rotations_.data()) each element's rotation is first
-  // set from x there.
+  // set from x there. With `records` (resized to one per worker) the barrier states of the
+  // elements below its threshold (every element with `recordAll`) are recorded there.
   double run(const Points& x, Mode mode, Points* out, bool withEnergy,
-             double* perElement = nullptr, Eigen::Matrix3d* newRotations = nullptr) const;
+             double* perElement = nullptr, Eigen::Matrix3d* newRotations = nullptr,
+             std::vector<BarrierRecord>* records = nullptr, bool recordAll = false) const;
+  // barrierSlot_ and barrierState_ from the workers' records of a rotation update.
+  void keepBarrierRecords(const std::vector<BarrierRecord>& records);
   // Gathers element e's node values of x into ue in the kernels' coordinate-major layout;
   // returns the node count.
   uint32_t gatherElement(uint32_t e, const NodeRows& x, double* ue) const;
@@ -71,6 +100,12 @@ class ElasticKernel {
 
   const FemMesh& mesh_;
   std::vector<Eigen::Matrix3d> rotations_;
+  ElasticModel model_ = ElasticModel::Corotated;  // the Simulator sets the scene's
+  InversionBarrier barrier_;
+  // Per element the start of its recorded R^T F in barrierState_, or -1 (nothing recorded).
+  std::vector<int64_t> barrierSlot_;
+  std::vector<double> barrierState_;
+  uint32_t barrierElements_ = 0;
   mutable std::vector<NodeRows> workerBuffers_;
   mutable NodeRows source_;  // the pass's input: x - rest (gradient mode) or the direction
   // Rows of the node vectors above are in the kernel's numbering: meshNode_[k] is the mesh

@@ -3,7 +3,8 @@
 namespace sculpt {
 
 double linearElementKernel(const double* u, const LinearPacked& element, const Eigen::Matrix3d& R,
-                           bool withRestTerm, bool withEnergy, double* gradient) {
+                           bool withRestTerm, bool withEnergy, double* gradient,
+                           BarrierArgs* barrier) {
   using V8 = Eigen::Array<double, 8, 1>;  // the 8 Gauss points
   // Nodes in the element frame: u' = R^T u.
   double ul[8][3];
@@ -35,7 +36,8 @@ double linearElementKernel(const double* u, const LinearPacked& element, const E
                   2.0 * (e[0][1] * e[0][1] + e[0][2] * e[0][2] + e[1][2] * e[1][2]);
     energy = (vm * ee + 0.5 * vl * trace * trace).sum();
   }
-  if (!gradient) return energy;
+  const bool withBarrier = barrier && (barrier->settings || barrier->record);
+  if (!gradient && !withBarrier) return energy;
   V8 S[3][3];
   for (int r = 0; r < 3; ++r)
     for (int s = r; s < 3; ++s) {
@@ -43,6 +45,25 @@ double linearElementKernel(const double* u, const LinearPacked& element, const E
       if (r == s) S[r][s] += vl * trace;
       else S[s][r] = S[r][s];
     }
+  if (withBarrier) {
+    const V8 bulk = vl + (2.0 / 3.0) * vm;
+    V8 A[3][3];  // R^T F (gradient mode) or its change along the direction (Hessian mode)
+    if (withRestTerm) {
+      for (int r = 0; r < 3; ++r)
+        for (int c = 0; c < 3; ++c) A[r][c] = M[r][c] + R(c, r);
+      if (barrier->settings) {
+        const V8 psi = addBarrierStress(A, bulk, *barrier->settings, S, barrier->active);
+        if (withEnergy) energy += psi.sum();
+      }
+      if (barrier->record)
+        for (int rc = 0; rc < 9; ++rc) Eigen::Map<V8>(barrier->record + rc * 8) = A[rc / 3][rc % 3];
+    } else if (barrier->state) {
+      for (int rc = 0; rc < 9; ++rc)
+        A[rc / 3][rc % 3] = Eigen::Map<const V8>(barrier->state + rc * 8);
+      addBarrierHessian(A, M, bulk, *barrier->settings, S);
+    }
+  }
+  if (!gradient) return energy;
   // g'_a = sum_q S_q dN_a(q), then g_a = R g'_a.
   for (int a = 0; a < 8; ++a) {
     double gl[3];

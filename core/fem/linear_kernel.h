@@ -4,6 +4,8 @@
 
 #include <Eigen/Core>
 
+#include "fem/barrier_stress.h"
+
 namespace sculpt {
 
 /// Rest data of one linear element, packed for the kernel.
@@ -14,8 +16,10 @@ struct LinearPacked {
 };
 
 /// u: 8 node values, coordinate-major: coordinate c of node a at u[c*8 + a]. Same contract as
-/// tricubicElementKernel.
+/// tricubicElementKernel; the barrier's record and state hold [9][8] values (A[r][c] at the 8
+/// Gauss points).
 double linearElementKernel(const double* u, const LinearPacked& element, const Eigen::Matrix3d& R,
-                           bool withRestTerm, bool withEnergy, double* gradient);
+                           bool withRestTerm, bool withEnergy, double* gradient,
+                           BarrierArgs* barrier = nullptr);
 
 }  // namespace sculpt

@@ -6,6 +6,7 @@
 
 #include <Eigen/Core>
 
+#include "fem/barrier_stress.h"
 #include "fem/material.h"
 
 namespace sculpt {
@@ -38,9 +39,10 @@ TricubicPacked tricubicPackedView(const double* block, bool affine, const double
 /// u: 64 node values (displacements or a direction), coordinate-major: coordinate c of node
 /// a*16+b*4+g at u[c*64 + a*16+b*4+g]. Writes the node gradient to `gradient` (same layout)
 /// when non-null and returns the energy contribution when `withEnergy`. `withRestTerm` adds
-/// sym(R) - I to the strain (gradient mode).
+/// sym(R) - I to the strain (gradient mode). `barrier` (null: none) adds the inversion barrier;
+/// its record and state hold 16 blocks of [9][4] values (A[r][c] at the four Gauss points k).
 double tricubicElementKernel(const double* u, const TricubicPacked& element,
                              const Eigen::Matrix3d& R, bool withRestTerm, bool withEnergy,
-                             double* gradient);
+                             double* gradient, BarrierArgs* barrier = nullptr);
 
 }  // namespace sculpt

@@ -70,6 +70,7 @@ struct SceneSettings {
   int renderLevel = 3;          ///< Catmull–Clark levels of a control mesh's surface (0..5), (c)
   Material material = defaultSceneMaterial();  ///< E, nu, density, damping (uniform)
   Integrator integrator = Integrator::Implicit;
+  ElasticModel elasticModel = kDefaultElasticModel;  ///< with or without the inversion barrier
   double timeStep = 1.0 / 60.0;                ///< seconds per step
   Eigen::Vector3d gravity{0.0, -9.81, 0.0};    ///< m/s^2
 

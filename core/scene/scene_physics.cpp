@@ -89,6 +89,7 @@ std::unique_ptr<ScenePhysics> ScenePhysics::build(std::shared_ptr<const SceneGeo
   if (!simulator.start()) return nullptr;
   SimulationSettings simulation;
   simulation.integrator = settings.integrator;
+  simulation.elasticModel = settings.elasticModel;
   simulation.timeStep = settings.timeStep;
   physics->simulator_ = std::make_unique<Simulator>(*physics->model_, simulation);
   for (uint32_t v = 0; v < g.pinned.size(); ++v)
@@ -238,9 +239,11 @@ void ScenePhysics::reset() {
 std::string ScenePhysics::applyLive(const SceneSettings& settings) {
   if (std::string problem = sceneSettingsProblem(settings); !problem.empty()) return problem;
   bool changed = false;
-  if (settings.integrator != applied_.integrator || settings.timeStep != applied_.timeStep) {
+  if (settings.integrator != applied_.integrator || settings.timeStep != applied_.timeStep ||
+      settings.elasticModel != applied_.elasticModel) {
     SimulationSettings simulation = simulator_->settings();
     simulation.integrator = settings.integrator;
+    simulation.elasticModel = settings.elasticModel;
     simulation.timeStep = settings.timeStep;
     if (std::string problem = simulator_->setSettings(simulation); !problem.empty()) return problem;
     changed = true;

@@ -31,7 +31,10 @@ CgResult solve(const LinearOperator& A, const LinearOperator& preconditioner,
   for (int it = 0; it < maxIterations; ++it) {
     A(p, Ap);
     const double pAp = p.dot(Ap);
-    if (!(pAp > 0) || !std::isfinite(pAp)) break;
+    if (!(pAp > 0) || !std::isfinite(pAp)) {
+      result.indefinite = std::isfinite(pAp);
+      break;
+    }
     const double alpha = rz / pAp;
     x += alpha * p;
     r -= alpha * Ap;

@@ -44,6 +44,7 @@ Simulator::Simulator(FemModel& model, SimulationSettings settings)
       settings_(validated(settings)),
       elastic_(std::make_unique<ElasticForm>(model, settings.corotated)),
       preconditioner_(std::make_unique<SystemPreconditioner>()) {
+  model.elastic().setModel(settings_.elasticModel);
   const Eigen::Index n = model.numControlPoints();
   position_ = model.restControl();
   velocity_.setZero(n, 3);
@@ -80,6 +81,7 @@ std::string Simulator::setSettings(const SimulationSettings& s) {
   if (std::string problem = settingsProblem(s); !problem.empty()) return problem;
   if (s.corotated != settings_.corotated)
     elastic_ = std::make_unique<ElasticForm>(model_, s.corotated);
+  if (s.elasticModel != model_.elastic().model()) model_.elastic().setModel(s.elasticModel);
   settings_ = s;
   return {};
 }
@@ -321,6 +323,15 @@ Simulator::Attempt Simulator::implicitSubstep(double h) {
   const CgResult cg = newtonStep(g, true, settings_.implicitTolerance, dx);
   a.iterations = cg.iterations;
   a.residual = cg.relativeResidual;
+  if (cg.indefinite && !cg.converged) {
+    // A load whose stiffness outweighs the solid's and the inertia's at this step (a pressure
+    // far above the Young's modulus): the linearised step has no minimum, and a shorter one
+    // (more inertia per step) does.
+    position_ = start;
+    a.ok = false;
+    a.failure = "the step's system is not positive definite (a load stiffer than the solid)";
+    return a;
+  }
   position_ += dx;
   velocity_ = (position_ - start) / h;
   Attempt check = checkState(start, loadBefore);

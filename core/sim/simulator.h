@@ -17,6 +17,7 @@
 #include <string>
 #include <vector>
 
+#include "fem/elastic_model.h"
 #include "fem/fem_model.h"
 #include "sim/conjugate_gradient.h"
 #include "sim/form.h"
@@ -36,6 +37,7 @@ struct SimulationSettings {
   Integrator integrator = Integrator::Implicit;
   double timeStep = 1.0 / 60.0;     ///< seconds per step()
   bool corotated = true;            ///< false: small-strain linear elasticity (rotations = I)
+  ElasticModel elasticModel = kDefaultElasticModel;  ///< with or without the inversion barrier
   double paperTolerance = 1e-4;     ///< relative CG residual of the paper's scheme
   double implicitTolerance = 1e-6;  ///< relative CG residual of the implicit and static solves
   int maxIterations = 2000;         ///< CG iterations per solve

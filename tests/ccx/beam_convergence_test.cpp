@@ -234,7 +234,7 @@ ErrorSplit splitError(const std::map<double, double>& ours, const std::map<doubl
 }
 
 TEST(BeamConvergence, CreasedBoxBeamConvergesToCalculix) {
-  if (!calculixAvailable()) GTEST_SKIP() << "ccx (CalculiX) is not on PATH";
+  SCULPT_REQUIRE_CCX();
   const auto tAll = Clock::now();
 
   // Reference.
@@ -293,7 +293,7 @@ TEST(BeamConvergence, CreasedBoxBeamConvergesToCalculix) {
 //    level-K lattice (trilinear boundary band, level-K nodes instead of the limit);
 //  * the part that stays as K grows is the control (subdivision) space itself.
 TEST(BeamConvergence, DISABLED_ErrorStudy) {
-  if (!calculixAvailable()) GTEST_SKIP() << "ccx (CalculiX) is not on PATH";
+  SCULPT_REQUIRE_CCX();
   for (double nu : {kPoisson, 0.0}) {
     const CcxTip ref = solveCcx(8, nu);
     ASSERT_TRUE(ref.ok);

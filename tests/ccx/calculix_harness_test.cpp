@@ -1,6 +1,6 @@
 // The CalculiX harness (tests/support/calculix.h) against analytic truth: homogeneous uniaxial
 // tension (which C3D8 and C3D20(R) reproduce exactly, so only the 7 printed digits limit the
-// agreement), a Timoshenko cantilever, and clean failures. Tests that run ccx skip without it.
+// agreement), a Timoshenko cantilever, and clean failures. Tests that run ccx fail without it.
 
 #include <gtest/gtest.h>
 #include <unistd.h>
@@ -19,8 +19,6 @@
 namespace sculpt::test {
 namespace {
 
-#define SKIP_WITHOUT_CCX() \
-  if (!calculixAvailable()) GTEST_SKIP() << "ccx (CalculiX) is not on PATH"
 
 /// Runs ccx and fails the test (returning an empty result) when it does not succeed.
 CcxResult runOrFail(const CcxModel& m) {
@@ -83,19 +81,19 @@ void expectExactUniaxialTension(CcxModel m, const Eigen::Vector3d& size) {
 }
 
 TEST(CalculixHarness, UniaxialTensionC3D8IsExact) {
-  SKIP_WITHOUT_CCX();
+  SCULPT_REQUIRE_CCX();
   const Eigen::Vector3d size(2.0, 1.0, 1.0);
   expectExactUniaxialTension(boxC3D8(4, 2, 2, size), size);
 }
 
 TEST(CalculixHarness, UniaxialTensionC3D20RIsExact) {
-  SKIP_WITHOUT_CCX();
+  SCULPT_REQUIRE_CCX();
   const Eigen::Vector3d size(2.0, 1.0, 1.0);
   expectExactUniaxialTension(boxC3D20(4, 2, 2, size, /*reduced=*/true), size);
 }
 
 TEST(CalculixHarness, UniaxialTensionC3D20IsExact) {
-  SKIP_WITHOUT_CCX();
+  SCULPT_REQUIRE_CCX();
   const Eigen::Vector3d size(2.0, 1.0, 1.0);
   expectExactUniaxialTension(boxC3D20(4, 2, 2, size, /*reduced=*/false), size);
 }
@@ -112,7 +110,7 @@ TEST(CalculixHarness, UniaxialTensionC3D20IsExact) {
 // mesh another 0.25%. Hence 1% and 3%: loose enough for the modelling difference, tight enough
 // to catch a wrong stiffness, load, node order or parse.
 TEST(CalculixHarness, CantileverTipDeflectionMatchesTimoshenko) {
-  SKIP_WITHOUT_CCX();
+  SCULPT_REQUIRE_CCX();
   const double L = 10.0, b = 1.0, h = 1.0, E = 1000.0, P = 1.0;
   for (const auto& [nu, bound] : {std::pair{0.0, 0.01}, std::pair{0.3, 0.03}}) {
     SCOPED_TRACE("nu = " + std::to_string(nu));
@@ -155,7 +153,7 @@ size_t leftoverRunDirs() {
 
 // Caught before ccx runs: ccx 2.20 itself segfaults on an element naming an undefined node.
 TEST(CalculixHarness, ElementWithUndefinedNodeFailsCleanly) {
-  SKIP_WITHOUT_CCX();
+  SCULPT_REQUIRE_CCX();
   CcxModel m = boxC3D8(1, 1, 1, Eigen::Vector3d::Ones());
   m.fixedNodes = nodesOnPlane(m, 0, 0.0);
   m.elements[0][7] = 999;
@@ -170,7 +168,7 @@ TEST(CalculixHarness, ElementWithUndefinedNodeFailsCleanly) {
 // Jacobian): the non-zero exit and ccx's own message must reach the caller, and the run
 // directory must be gone.
 TEST(CalculixHarness, CcxFailureIsReportedAndCleanedUp) {
-  SKIP_WITHOUT_CCX();
+  SCULPT_REQUIRE_CCX();
   CcxModel m = boxC3D8(1, 1, 1, Eigen::Vector3d::Ones());
   m.fixedNodes = nodesOnPlane(m, 0, 0.0);
   addUniformTraction(m, 0, 1.0, Eigen::Vector3d(1.0, 0.0, 0.0));

@@ -16,7 +16,7 @@
 //   * nu = 0.45 (near-incompressible: locking is the same in both, since the element is);
 //   * our co-rotated elasticity under a tiny load (displacements ~1e-8 of the size), whose
 //     linearisation at rest is the same small-strain problem.
-// Tests that run ccx skip without it.
+// Tests that run ccx fail without it.
 
 #include <gtest/gtest.h>
 
@@ -46,8 +46,6 @@
 namespace sculpt::test {
 namespace {
 
-#define SKIP_WITHOUT_CCX() \
-  if (!calculixAvailable()) GTEST_SKIP() << "ccx (CalculiX) is not on PATH"
 
 /// The sculpt cell complex of a C3D8 model: vertex i = node i, each element's 8 VTK-ordered
 /// nodes a hexahedral cell.
@@ -190,14 +188,14 @@ CcxModel twistedBlock(double E, double nu, double T, double jitter, uint64_t see
 }
 
 TEST(FemVsCalculix, ClampedCantileverLinear) {
-  SKIP_WITHOUT_CCX();
+  SCULPT_REQUIRE_CCX();
   const Comparison c = compareWithCcx("cantilever 8x2x2", cantilever(1e6, 0.3, 1.0), false);
   EXPECT_GT(c.maxCcx, 0.0);
   EXPECT_LE(c.maxDiff, kTolerance * c.maxCcx);
 }
 
 TEST(FemVsCalculix, TwistedBlockLinear) {
-  SKIP_WITHOUT_CCX();
+  SCULPT_REQUIRE_CCX();
   const Comparison c =
       compareWithCcx("twisted block 4x4x4", twistedBlock(1e6, 0.3, 1.0, 0, 0), false);
   EXPECT_GT(c.maxCcx, 0.0);
@@ -205,7 +203,7 @@ TEST(FemVsCalculix, TwistedBlockLinear) {
 }
 
 TEST(FemVsCalculix, JitteredMeshesLinear) {
-  SKIP_WITHOUT_CCX();
+  SCULPT_REQUIRE_CCX();
   {
     CcxModel m = boxC3D8(8, 2, 2, Eigen::Vector3d(4.0, 1.0, 1.0));
     jitterNodes(m, 0.1 * 0.5, 7);  // spacing 0.5
@@ -228,7 +226,7 @@ TEST(FemVsCalculix, JitteredMeshesLinear) {
 }
 
 TEST(FemVsCalculix, NearlyIncompressible) {
-  SKIP_WITHOUT_CCX();
+  SCULPT_REQUIRE_CCX();
   {
     const Comparison c =
         compareWithCcx("cantilever 8x2x2 nu 0.45", cantilever(1e6, 0.45, 1.0), false);
@@ -254,7 +252,7 @@ TEST(FemVsCalculix, NearlyIncompressible) {
 // Hence the residual is checked against the floor here, not report.converged; the nodal
 // comparison with ccx is the real check.
 TEST(FemVsCalculix, CorotatedAgreesUnderTinyLoad) {
-  SKIP_WITHOUT_CCX();
+  SCULPT_REQUIRE_CCX();
   // Cantilever: P = 1 gives a tip deflection of 2.3e-4 on a length of 4; scale to ~3.5e-8.
   {
     const Comparison c = compareWithCcx("cantilever 8x2x2 (tiny load)", cantilever(1e6, 0.3, 1.0),

@@ -1,11 +1,12 @@
 #pragma once
+#include "support/required_tool.h"
 #include "support/shell_quote.h"
 // TetGen for tests: closed triangulated surfaces (a box, an icosphere), meshed into tetrahedra by
 // the real `tetgen` program and loaded with our TetGen reader. It gives tests realistic
 // unstructured volume meshes of known volume without storing them. Everything depends only on
-// `tetgen` being on PATH; tetgenMesh returns nullopt when it is not, so tests can skip:
+// `tetgen` being on PATH; tetgenMesh returns nullopt when it is not, and tests fail:
 //
-//   if (!test::tetgenAvailable()) GTEST_SKIP() << "tetgen not on PATH";
+//   SCULPT_REQUIRE_TOOL(test::tetgenAvailable(), "tetgen");
 //   test::ScopedTempDir dir("box");
 //   std::string error;
 //   const auto mesh = test::tetgenMesh(test::boxSurface(lo, hi), 0.01, dir.path(), &error);

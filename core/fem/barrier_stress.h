@@ -1,0 +1,100 @@
+#pragma once
+// The inversion barrier of fem/elastic_model.h at a group of Gauss points held in the lanes of an
+// Eigen array (4 for the tricubic kernel, 8 for the linear one). Everything is in the element's
+// co-rotated frame: A = R^T F, and the stress added is dpsi/dA, which the kernels turn into node
+// forces as they do their own stress (det and cofactor are unchanged by the proper rotation R).
+
+#include <Eigen/Core>
+
+#include "fem/elastic_model.h"
+
+namespace sculpt {
+
+/// What a kernel call needs of the barrier. Gradient mode: when `record` is non-null the kernel
+/// writes A at every Gauss point there (with or without `settings`: the Jacobian report uses it) (9 values per point, lanes fastest, in the kernel's
+/// Gauss-point blocks) and sets `active` when some point lies below the threshold. Hessian mode:
+/// `state` is what a gradient call recorded for this element; null means no point of it was below
+/// the threshold, so the barrier adds nothing to its Hessian.
+struct BarrierArgs {
+  const InversionBarrier* settings = nullptr;  ///< null: the corotated model, no barrier
+  double* record = nullptr;
+  bool active = false;
+  const double* state = nullptr;
+};
+
+namespace barrier_detail {
+
+// Column m of cof(A): the cross product of the other two columns, so that A^T cof(A) = det(A) I.
+template <class V>
+void cofactorColumn(const V (&A)[3][3], int m, V (&column)[3]) {
+  const int p = (m + 1) % 3, q = (m + 2) % 3;
+  for (int r = 0; r < 3; ++r) {
+    const int r1 = (r + 1) % 3, r2 = (r + 2) % 3;
+    column[r] = A[r1][p] * A[r2][q] - A[r2][p] * A[r1][q];
+  }
+}
+
+template <class V>
+void cofactor(const V (&A)[3][3], V (&cof)[3][3]) {
+  for (int m = 0; m < 3; ++m) {
+    V column[3];
+    cofactorColumn(A, m, column);
+    for (int r = 0; r < 3; ++r) cof[r][m] = column[r];
+  }
+}
+
+}  // namespace barrier_detail
+
+/// Gradient mode at the lanes' A (= R^T F): adds dpsi/dA to S and returns psi per lane (zero
+/// where J >= threshold). `bulk` is V (lambda + 2 mu / 3) per lane. `any` is set when a lane
+/// is below the threshold.
+template <class V>
+V addBarrierStress(const V (&A)[3][3], const V& bulk, const InversionBarrier& b, V (&S)[3][3],
+                   bool& any) {
+  V first[3];
+  barrier_detail::cofactorColumn(A, 0, first);
+  const V J = A[0][0] * first[0] + A[1][0] * first[1] + A[2][0] * first[2];
+  const V t = (b.threshold - J).max(0.0);
+  if (!(t > 0.0).any()) return V::Zero();
+  any = true;
+  V cof[3][3];
+  barrier_detail::cofactor(A, cof);
+  const V c = (b.stiffness / b.threshold) * bulk;
+  const V slope = -3.0 * c * t * t;  // dpsi/dJ
+  for (int r = 0; r < 3; ++r)
+    for (int m = 0; m < 3; ++m) S[r][m] += slope * cof[r][m];
+  return c * t * t * t;
+}
+
+/// Hessian mode: adds the barrier's second derivative at the recorded A applied to the
+/// direction's dA to S (see InversionBarrier::exactHessian for what is kept).
+template <class V>
+void addBarrierHessian(const V (&A)[3][3], const V (&dA)[3][3], const V& bulk,
+                       const InversionBarrier& b, V (&S)[3][3]) {
+  V cof[3][3];
+  barrier_detail::cofactor(A, cof);
+  const V J = A[0][0] * cof[0][0] + A[1][0] * cof[1][0] + A[2][0] * cof[2][0];
+  const V t = (b.threshold - J).max(0.0);
+  if (!(t > 0.0).any()) return;
+  const V c = (b.stiffness / b.threshold) * bulk;
+  V dJ = V::Zero();
+  for (int r = 0; r < 3; ++r)
+    for (int m = 0; m < 3; ++m) dJ += cof[r][m] * dA[r][m];
+  const V curvature = 6.0 * c * t * dJ;  // psi'' dJ
+  for (int r = 0; r < 3; ++r)
+    for (int m = 0; m < 3; ++m) S[r][m] += curvature * cof[r][m];
+  if (!b.exactHessian) return;
+  // psi' d cof(A)[dA]: column m of cof is a_p x a_q, so its change is da_p x a_q + a_p x da_q.
+  const V slope = -3.0 * c * t * t;
+  for (int m = 0; m < 3; ++m) {
+    const int p = (m + 1) % 3, q = (m + 2) % 3;
+    for (int r = 0; r < 3; ++r) {
+      const int r1 = (r + 1) % 3, r2 = (r + 2) % 3;
+      const V change = dA[r1][p] * A[r2][q] - dA[r2][p] * A[r1][q] + A[r1][p] * dA[r2][q] -
+                       A[r2][p] * dA[r1][q];
+      S[r][m] += slope * change;
+    }
+  }
+}
+
+}  // namespace sculpt
