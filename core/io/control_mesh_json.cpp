@@ -9,6 +9,7 @@
 #include <vector>
 
 #include "io/atomic_file.h"
+#include "io/input_file.h"
 #include "io/json_nesting.h"
 #include "io/number_text.h"
 #include "mesh/standard_cell.h"
@@ -289,7 +290,7 @@ CellComplex parseControlMeshJson(std::string_view text, std::string_view sourceN
 }
 
 CellComplex loadControlMeshJson(const std::filesystem::path& path) {
-  return parseControlMeshJson(readFile(path), path.string());
+  return parseControlMeshJson(readInputFile(path, kControlMeshInput), path.string());
 }
 
 std::string controlMeshToJson(const CellComplex& mesh) {

@@ -23,10 +23,12 @@
 #include <sstream>
 #include <string>
 #include <string_view>
+#include <utility>
 #include <vector>
 
 #include "io/atomic_file.h"
 #include "io/file_error.h"
+#include "io/input_file.h"
 #include "io/json_nesting.h"
 
 namespace sculpt::gltf {
@@ -151,6 +153,41 @@ bool writeImageAsLoaded(const std::string* /*baseDir*/, const std::string* /*fil
   return true;
 }
 
+// The files that a .gltf names by uri (buffers, images) are read through readInputFile, like
+// the document itself: tinygltf's own reader opens a directory, a device or a FIFO and then
+// allocates what seeking reports (bad_alloc) or blocks. A relative uri is taken relative to the
+// document only, as glTF specifies, so that a missing file is named rather than looked for in
+// the working directory.
+struct ResourceReads {
+  std::vector<std::pair<std::string, std::string>> refusals;  // (path as tinygltf gave it, why)
+};
+
+bool resourcePathGiven(const std::string& /*path*/, void* /*user*/) { return true; }
+
+bool readResource(std::vector<unsigned char>* out, std::string* err, const std::string& path,
+                  void* user) {
+  try {
+    const std::string bytes = readInputFile(path, kGltfResourceInput);
+    out->assign(bytes.begin(), bytes.end());
+    return true;
+  } catch (const FileError& error) {
+    static_cast<ResourceReads*>(user)->refusals.emplace_back(path, error.what());
+    if (err != nullptr) *err += error.what();
+    return false;
+  }
+}
+
+/// The refusal behind a failed load, if a buffer's file was refused: tinygltf stops at the first
+/// buffer it cannot read (so it is buffer `model.buffers.size()`) and, unlike an image, reports
+/// it as an error, naming the path.
+void failOnRefusedBuffer(const std::filesystem::path& path, const tinygltf::Model& model,
+                         const ResourceReads& reads, const std::string& error) {
+  for (const auto& [resource, why] : reads.refusals) {
+    if (error.find("File read error : " + resource) == std::string::npos) continue;
+    fail(path, "buffer " + std::to_string(model.buffers.size()), why);
+  }
+}
+
 std::string firstLine(const std::string& text) {
   std::string line = text.substr(0, text.find('\n'));
   while (!line.empty() && (line.back() == '\r' || line.back() == ' ')) line.pop_back();
@@ -164,10 +201,7 @@ std::string firstLine(const std::string& text) {
 constexpr int kMaxJsonNesting = 512;
 
 tinygltf::Model loadModel(const std::filesystem::path& path) {
-  const std::string bytes = readFile(path);
-  if (bytes.size() >= std::numeric_limits<uint32_t>::max()) {
-    fail(path, "", "files of 4 GiB or more are not supported");
-  }
+  const std::string bytes = readInputFile(path, kSurfaceInput);  // below 4 GiB, as GLB's lengths
   const bool binary = bytes.size() >= 4 && bytes.compare(0, 4, "glTF") == 0;
   const size_t length = binary ? checkGlbLayout(path, bytes) : bytes.size();
   // tinygltf's JSON parser recurses once per level: a hostile file could overflow the stack.
@@ -180,6 +214,9 @@ tinygltf::Model loadModel(const std::filesystem::path& path) {
 
   tinygltf::TinyGLTF loader;
   loader.SetImageLoader(&keepImageUndecoded, nullptr);
+  ResourceReads reads;
+  loader.SetFsCallbacks({&resourcePathGiven, &tinygltf::ExpandFilePath, &readResource,
+                         &tinygltf::WriteWholeFile, &reads});
   tinygltf::Model model;
   std::string error, warning;
   const std::string baseDir = path.parent_path().string();
@@ -194,7 +231,10 @@ tinygltf::Model loadModel(const std::filesystem::path& path) {
   } catch (const std::exception& exception) {  // tinygltf 2.7 can throw on empty buffers
     error = exception.what();
   }
-  if (!loaded) fail(path, "", "not valid glTF (" + firstLine(error) + ")");
+  if (!loaded) {
+    failOnRefusedBuffer(path, model, reads, error);
+    fail(path, "", "not valid glTF (" + firstLine(error) + ")");
+  }
   for (const std::string& extension : model.extensionsRequired) {
     if (extension == "KHR_draco_mesh_compression" || extension == "EXT_meshopt_compression") {
       fail(path, "", "requires " + extension + ": compressed geometry is not supported");

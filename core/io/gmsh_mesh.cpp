@@ -8,7 +8,7 @@
 #include <utility>
 #include <vector>
 
-#include "io/atomic_file.h"
+#include "io/input_file.h"
 #include "io/text_scanner.h"
 #include "io/volume_mesh_file.h"
 
@@ -431,7 +431,7 @@ VolumeMesh parseGmshMesh(std::string_view text, std::string_view sourceName,
 }
 
 VolumeMesh readGmshMesh(const std::filesystem::path& path, CellShapeCheck shapes) {
-  const std::string text = readFile(path);
+  const std::string text = readInputFile(path, kVolumeMeshInput);
   return parseGmshMesh(text, path.string(), shapes);
 }
 

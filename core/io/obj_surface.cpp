@@ -8,6 +8,7 @@
 
 #include "io/atomic_file.h"
 #include "io/file_error.h"
+#include "io/input_file.h"
 #include "io/number_text.h"
 
 namespace sculpt {
@@ -222,7 +223,7 @@ SurfaceMesh parseObjSurface(std::string_view text, std::string_view sourceName) 
 }
 
 SurfaceMesh readObjSurface(const std::filesystem::path& path) {
-  return parseObjSurface(readFile(path), path.string());
+  return parseObjSurface(readInputFile(path, kSurfaceInput), path.string());
 }
 
 std::string objSurfaceText(const SurfaceMesh& surface, NumberPrecision precision) {

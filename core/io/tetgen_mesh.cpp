@@ -1,10 +1,11 @@
 #include "io/tetgen_mesh.h"
 
+#include <cmath>
 #include <cstdint>
 #include <string>
 #include <vector>
 
-#include "io/atomic_file.h"
+#include "io/input_file.h"
 #include "io/text_scanner.h"
 #include "io/volume_mesh_file.h"
 
@@ -55,6 +56,11 @@ TetGenNodes readNodes(std::string_view text, std::string_view sourceName) {
     for (Eigen::Index k = 0; k < 3; ++k) {
       if (!scanner.readReal(nodes.positions(row, k))) {
         scanner.failExpected("a coordinate of point " + std::to_string(number));
+      }
+      // Here, where the line is known: the mesh check would blame the .ele file it reads last.
+      if (!std::isfinite(nodes.positions(row, k))) {
+        scanner.fail("coordinate " + std::to_string(k) + " of point " + std::to_string(number) +
+                     " is not finite");
       }
     }
     for (uint64_t k = 0; k < numAttributes + numMarkers; ++k) {
@@ -135,8 +141,8 @@ VolumeMesh readTetGenMesh(const std::filesystem::path& path, CellShapeCheck shap
   std::filesystem::path elePath = path;
   nodePath.replace_extension(".node");
   elePath.replace_extension(".ele");
-  const std::string nodeText = readFile(nodePath);
-  const std::string eleText = readFile(elePath);
+  const std::string nodeText = readInputFile(nodePath, kVolumeMeshInput);
+  const std::string eleText = readInputFile(elePath, kVolumeMeshInput);
   return parseTetGenMesh(nodeText, eleText, nodePath.string(), elePath.string(), shapes);
 }
 

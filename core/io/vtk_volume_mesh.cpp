@@ -11,6 +11,7 @@
 #include <vector>
 
 #include "io/atomic_file.h"
+#include "io/input_file.h"
 #include "io/number_text.h"
 #include "io/text_scanner.h"
 #include "io/volume_mesh_file.h"
@@ -473,7 +474,7 @@ VolumeMesh parseVtkVolumeMesh(std::string_view bytes, std::string_view sourceNam
 }
 
 VolumeMesh readVtkVolumeMesh(const std::filesystem::path& path, CellShapeCheck shapes) {
-  const std::string bytes = readFile(path);
+  const std::string bytes = readInputFile(path, kVolumeMeshInput);
   return parseVtkVolumeMesh(bytes, path.string(), shapes);
 }
 

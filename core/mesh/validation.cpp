@@ -6,9 +6,9 @@
 #include <numeric>
 #include <string>
 
-#include <Eigen/Geometry>
-
+#include "mesh/cell_geometry.h"
 #include "mesh/topology.h"
+#include "util/short_number.h"
 
 namespace sculpt {
 namespace {
@@ -16,6 +16,10 @@ namespace {
 using Kind = ValidationIssue::Kind;
 using Severity = ValidationIssue::Severity;
 using Element = ValidationIssue::Element;
+
+// A cell whose volume is at most this fraction of its bounding box's is flat: rounding in the
+// unit box is a few 1e-16, and a real cell this thin is useless to simulate anyway.
+constexpr double kFlatVolume = 1e-12;
 
 std::string edgeName(uint32_t a, uint32_t b) {
   return "edge (" + std::to_string(a) + ", " + std::to_string(b) + ")";
@@ -27,28 +31,79 @@ uint32_t findRoot(std::vector<uint32_t>& parent, uint32_t i) {
   return i;
 }
 
+// One directed edge of a cell's face: the undirected edge's key, +1 or -1 for its direction,
+// and the face (its index within the cell).
+struct CellEdgeUse {
+  uint64_t key;
+  int direction;
+  uint32_t face;
+  bool operator<(const CellEdgeUse& other) const {
+    return key != other.key ? key < other.key : face < other.face;
+  }
+};
+
+// A closed, consistently oriented cell must also bound a ball, as MacCracken-Joy cells do: its
+// faces one connected surface (two disjoint tetrahedra listed as one cell are closed too) of
+// Euler characteristic V - E + F = 2. Connected through edges, a closed orientable surface has
+// V - E + F <= 2, with equality only for a sphere; a handle or a vertex where the surface
+// pinches lowers it.
+void checkCellIsBall(uint32_t c, uint32_t numFaces, const std::vector<CellEdgeUse>& uses,
+                     std::vector<uint32_t>& parent, std::vector<ValidationIssue>& issues) {
+  parent.resize(numFaces);
+  std::iota(parent.begin(), parent.end(), 0u);
+  std::vector<uint32_t> vertices;
+  for (size_t i = 0; i + 1 < uses.size(); i += 2) {  // closed: each edge is a pair of uses
+    parent[findRoot(parent, uses[i].face)] = findRoot(parent, uses[i + 1].face);
+    vertices.push_back(uint32_t(uses[i].key >> 32));
+    vertices.push_back(uint32_t(uses[i].key));
+  }
+  std::sort(vertices.begin(), vertices.end());
+  vertices.erase(std::unique(vertices.begin(), vertices.end()), vertices.end());
+  uint32_t surfaces = 0;
+  for (uint32_t f = 0; f < numFaces; ++f) surfaces += findRoot(parent, f) == f;
+  const std::string cell = "cell " + std::to_string(c);
+  if (surfaces > 1) {
+    issues.push_back({Kind::CellNotBall, Severity::Error, Element::Cell, c,
+                      cell + " is not one solid: its faces form " + std::to_string(surfaces) +
+                          " separate closed surfaces (list each part as a cell of its own)"});
+    return;
+  }
+  const auto euler = int64_t(vertices.size()) - int64_t(uses.size() / 2) + int64_t(numFaces);
+  if (euler != 2)
+    issues.push_back({Kind::CellNotBall, Severity::Error, Element::Cell, c,
+                      cell + " is not a solid ball: its faces form a closed surface with " +
+                          "vertices - edges + faces = " + std::to_string(euler) +
+                          " (a ball's is 2; the cell has a hole through it or pinches at a "
+                          "vertex)"});
+}
+
 // Within each cell every edge must be used exactly twice, once in each direction.
 void checkCellsClosed(const CellComplex& mesh, std::vector<ValidationIssue>& issues) {
-  std::vector<std::pair<uint64_t, int>> directed;
+  std::vector<CellEdgeUse> uses;
+  std::vector<uint32_t> parent;
   for (uint32_t c = 0; c < mesh.numCells(); ++c) {
-    directed.clear();
+    uses.clear();
+    bool repeatedVertex = false;
     for (uint32_t j = 0; j < mesh.numFacesOfCell(c); ++j) {
       auto loop = mesh.cellFace(c, j);
       for (size_t i = 0; i < loop.size(); ++i) {
         const uint32_t a = loop[i], b = loop[(i + 1) % loop.size()];
-        if (a == b) continue;
+        if (a == b) {
+          repeatedVertex = true;
+          continue;
+        }
         const uint64_t key = (uint64_t(std::min(a, b)) << 32) | std::max(a, b);
-        directed.push_back({key, a < b ? 1 : -1});
+        uses.push_back({key, a < b ? 1 : -1, j});
       }
     }
-    std::sort(directed.begin(), directed.end());
+    std::sort(uses.begin(), uses.end());
     bool reportedOpen = false, reportedOrientation = false;
-    for (size_t i = 0; i < directed.size();) {
+    for (size_t i = 0; i < uses.size();) {
       size_t j = i;
       int forward = 0, backward = 0;
-      for (; j < directed.size() && directed[j].first == directed[i].first; ++j)
-        (directed[j].second > 0 ? forward : backward)++;
-      const uint32_t a = uint32_t(directed[i].first >> 32), b = uint32_t(directed[i].first);
+      for (; j < uses.size() && uses[j].key == uses[i].key; ++j)
+        (uses[j].direction > 0 ? forward : backward)++;
+      const uint32_t a = uint32_t(uses[i].key >> 32), b = uint32_t(uses[i].key);
       if (forward + backward != 2 && !reportedOpen) {
         issues.push_back({Kind::CellNotClosed, Severity::Error, Element::Cell, c,
                           "cell " + std::to_string(c) + " is not closed: its faces use " +
@@ -63,6 +118,9 @@ void checkCellsClosed(const CellComplex& mesh, std::vector<ValidationIssue>& iss
       }
       i = j;
     }
+    // A degenerate face (reported by the topology) would miscount the surface.
+    if (!reportedOpen && !reportedOrientation && !repeatedVertex && !uses.empty())
+      checkCellIsBall(c, mesh.numFacesOfCell(c), uses, parent, issues);
   }
 }
 
@@ -136,33 +194,6 @@ void checkTags(const CellComplex& mesh, const Topology& t, std::vector<Validatio
 
 }  // namespace
 
-double cellVolume(const CellComplex& mesh, uint32_t c) {
-  // Cell centroid = plain vertex average of the loops' vertices (repeats do not matter here:
-  // the divergence-theorem sum is exact for any reference point of a closed surface).
-  Eigen::Vector3d reference = Eigen::Vector3d::Zero();
-  uint32_t count = 0;
-  for (uint32_t j = 0; j < mesh.numFacesOfCell(c); ++j)
-    for (uint32_t v : mesh.cellFace(c, j)) {
-      reference += mesh.positions.row(v).transpose();
-      ++count;
-    }
-  if (count == 0) return 0.0;
-  reference /= count;
-  double volume = 0.0;
-  for (uint32_t j = 0; j < mesh.numFacesOfCell(c); ++j) {
-    auto loop = mesh.cellFace(c, j);
-    Eigen::Vector3d centre = Eigen::Vector3d::Zero();
-    for (uint32_t v : loop) centre += mesh.positions.row(v).transpose();
-    centre /= double(loop.size());
-    for (size_t i = 0; i < loop.size(); ++i) {
-      const Eigen::Vector3d a = mesh.positions.row(loop[i]).transpose() - reference;
-      const Eigen::Vector3d b = mesh.positions.row(loop[(i + 1) % loop.size()]).transpose() - reference;
-      volume += (centre - reference).dot(a.cross(b)) / 6.0;
-    }
-  }
-  return volume;
-}
-
 std::vector<ValidationIssue> validate(const CellComplex& mesh) {
   std::vector<ValidationIssue> issues;
   const uint32_t numVertices = mesh.numVertices();
@@ -208,25 +239,36 @@ std::vector<ValidationIssue> validate(const CellComplex& mesh) {
   checkBoundaryManifold(t, issues);
   checkTags(mesh, t, issues);
 
-  // Volumes, relative to the size of each cell so that tiny but valid cells pass. Cells with a
-  // non-finite vertex were reported above and have no meaningful volume.
+  // Volumes and corners, in each cell's own bounding box (mesh/cell_geometry.h) so that tiny,
+  // huge and anisotropic cells are judged alike. Cells with a non-finite vertex were reported
+  // above and have no meaningful volume; corners mean nothing in a cell whose faces were found
+  // not to bound one solid.
+  std::vector<bool> shapeReported(mesh.numCells(), false);
+  for (const ValidationIssue& issue : issues)
+    if (issue.element == Element::Cell) shapeReported[issue.index] = true;
   for (uint32_t c = 0; c < mesh.numCells(); ++c) {
     bool finite = true;
     for (uint32_t v : t.cellVertices.row(c)) finite &= mesh.positions.row(v).allFinite();
     if (!finite) continue;
-    Eigen::Vector3d lo = Eigen::Vector3d::Constant(INFINITY), hi = -lo;
-    for (uint32_t v : t.cellVertices.row(c)) {
-      lo = lo.cwiseMin(mesh.positions.row(v).transpose());
-      hi = hi.cwiseMax(mesh.positions.row(v).transpose());
-    }
-    const double size = (hi - lo).norm();
-    const double volume = cellVolume(mesh, c);
-    if (!(volume > 1e-12 * size * size * size))
+    const std::string cell = "cell " + std::to_string(c);
+    const double volume = relativeCellVolume(mesh, c);
+    if (!(volume > kFlatVolume)) {
       issues.push_back({Kind::NonPositiveVolume, Severity::Error, Element::Cell, c,
-                        "cell " + std::to_string(c) + " has " +
-                            (std::abs(volume) <= 1e-12 * size * size * size ? "zero" : "negative") +
-                            " volume (" + std::to_string(volume) +
-                            "); faces must wind counter-clockwise seen from outside"});
+                        volume < -kFlatVolume
+                            ? cell + " has negative volume (" + shortNumber(volume) +
+                                  " of its bounding box's); faces must wind counter-clockwise "
+                                  "seen from outside"
+                            : cell + " has zero volume: it is flat"});
+    } else if (const auto corner =
+                   shapeReported[c] ? std::nullopt : findInvertedCorner(mesh, c, kFlatVolume)) {
+      issues.push_back({Kind::InvertedCorner, Severity::Error, Element::Cell, c,
+                        cell + " is inverted at vertex " + std::to_string(corner->vertex) +
+                            ": the cell's corner there has " +
+                            (corner->volume < 0.0 ? "negative" : "zero") + " volume (" +
+                            shortNumber(corner->volume) +
+                            " of the cell's bounding box's), as when a corner is pushed through "
+                            "the cell; its subdivision would be inside out"});
+    }
   }
 
   for (uint32_t v = 0; v < numVertices; ++v)
@@ -234,6 +276,12 @@ std::vector<ValidationIssue> validate(const CellComplex& mesh) {
       issues.push_back({Kind::UnusedVertex, Severity::Warning, Element::Vertex, v,
                         "vertex " + std::to_string(v) + " is not used by any cell"});
   return issues;
+}
+
+std::string firstErrorMessage(const std::vector<ValidationIssue>& issues) {
+  for (const ValidationIssue& issue : issues)
+    if (issue.severity == Severity::Error) return issue.message;
+  return {};
 }
 
 bool isValid(const std::vector<ValidationIssue>& issues) {

@@ -6,6 +6,7 @@
 #include <vector>
 
 #include "mesh/cell_complex.h"
+#include "mesh/cell_geometry.h"  // cellVolume, for the callers that check volumes themselves
 
 namespace sculpt {
 
@@ -25,6 +26,8 @@ struct ValidationIssue {
     DegenerateFace = 11,
     EmptyMesh = 12,
     BadTag = 13,
+    CellNotBall = 14,     ///< a closed cell whose faces are not one sphere-like surface
+    InvertedCorner = 15,  ///< a positive-volume cell with a corner pushed through it
   };
   enum class Severity { Error, Warning };
   /// What the element index refers to.
@@ -43,8 +46,7 @@ std::vector<ValidationIssue> validate(const CellComplex& complex);
 /// True when no issue is an error.
 bool isValid(const std::vector<ValidationIssue>& issues);
 
-/// Signed volume of cell c (positive for outward-oriented faces): faces are fanned from their
-/// centroid and the tetrahedra are taken against the cell centroid.
-double cellVolume(const CellComplex& complex, uint32_t c);
+/// The message of the first error, or an empty string when there is none.
+std::string firstErrorMessage(const std::vector<ValidationIssue>& issues);
 
 }  // namespace sculpt

@@ -9,6 +9,7 @@
 #include <variant>
 
 #include "io/atomic_file.h"
+#include "io/input_file.h"
 #include "io/json_nesting.h"
 #include "project/project_validation.h"
 #include "util/crc32.h"
@@ -462,7 +463,8 @@ std::string serializeProject(const Project& project) {
   // Manifest: nlohmann's objects are sorted by key, so the text is a function of the project.
   json tools = json::object();
   for (const auto& [key, value] : project.tools) {
-    std::visit([&](const auto& v) { tools[key] = v; }, value);
+    // clang 14 cannot capture a structured binding (C++20 allows it): the lambda takes the key.
+    std::visit([&tools, &name = key](const auto& v) { tools[name] = v; }, value);
   }
   const json manifest = {
       {"format", kFormatName},
@@ -522,7 +524,7 @@ void saveProject(const Project& project, const std::filesystem::path& path) {
 }
 
 Project loadProject(const std::filesystem::path& path) {
-  const std::string bytes = readFile(path);
+  const std::string bytes = readInputFile(path, kProjectInput);
   return parseProject(bytes, path.filename().string());
 }
 

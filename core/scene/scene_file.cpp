@@ -3,11 +3,12 @@
 #include <algorithm>
 #include <cctype>
 #include <cmath>
-#include <fstream>
 #include <memory>
-#include <sstream>
 #include <stdexcept>
 
+#include "io/file_error.h"
+#include "io/input_file.h"
+#include "mesh/validation.h"
 #include "project/project_file.h"
 #include "util/file_extension.h"
 
@@ -47,16 +48,20 @@ SceneSource sceneSourceFor(const std::string& path) {
 }
 
 std::string fileContentHash(const std::filesystem::path& path) {
-  std::ifstream in(path, std::ios::binary);
-  if (!in) return {};
-  std::ostringstream bytes;
-  bytes << in.rdbuf();
-  return contentHash(bytes.str());
+  try {
+    return contentHash(readInputFile(path, kSurfaceInput));
+  } catch (const FileError&) {
+    return {};
+  }
 }
 
 ProjectScene projectScene(Project project, const std::filesystem::path& from,
                           const std::string& name, const SceneSettings& defaults) {
   ProjectScene scene;
+  // The scene builder validates the mesh again, but without the project's name to give.
+  if (const std::string problem = firstErrorMessage(validate(project.controlMesh));
+      !problem.empty())
+    throw FileError(name + ": its control mesh is not valid: " + problem);
   const auto source = project.tools.find(kSceneSourceKey);
   scene.source.kind = sceneKindFromName(
       source != project.tools.end() && std::holds_alternative<std::string>(source->second)
@@ -66,8 +71,11 @@ ProjectScene projectScene(Project project, const std::filesystem::path& from,
     std::filesystem::path surface = project.surface.path;
     if (surface.is_relative()) surface = from.parent_path() / surface;
     scene.source.path = surface.string();
-    if (!std::filesystem::exists(surface))
-      throw std::runtime_error(name + ": its surface " + surface.string() + " does not exist");
+    try {
+      checkInputFile(surface, kSurfaceInput);
+    } catch (const FileError& error) {  // "<surface>: <why>"
+      throw FileError(name + ": its surface " + error.what());
+    }
     if (!project.surface.contentHash.empty() &&
         fileContentHash(surface) != project.surface.contentHash)
       scene.warnings.push_back("the surface " + surface.filename().string() +
@@ -83,6 +91,14 @@ ProjectScene projectScene(Project project, const std::filesystem::path& from,
   if (const auto it = project.tools.find("scene.cageCellsAcross");
       it != project.tools.end() && std::holds_alternative<double>(it->second))
     s.cageCellsAcross = std::clamp(std::get<double>(it->second), 1.0, 64.0);
+  if (const auto it = project.tools.find("scene.elasticModel");
+      it != project.tools.end() && std::holds_alternative<std::string>(it->second)) {
+    if (const auto model = parseElasticModel(std::get<std::string>(it->second)))
+      s.elasticModel = *model;
+    else
+      scene.warnings.push_back("unknown elastic model \"" + std::get<std::string>(it->second) +
+                               "\"; using " + elasticModelName(s.elasticModel));
+  }
   if (const auto it = project.tools.find("scene.renderLevel");
       it != project.tools.end() && std::holds_alternative<double>(it->second))
     s.renderLevel = std::clamp(static_cast<int>(std::get<double>(it->second)), 0, 5);
@@ -93,6 +109,7 @@ ProjectScene projectScene(Project project, const std::filesystem::path& from,
 void storeSceneSettings(const SceneSettings& settings, Project& project) {
   project.tools["scene.cageCellsAcross"] = settings.cageCellsAcross;
   project.tools["scene.renderLevel"] = static_cast<double>(settings.renderLevel);
+  project.tools["scene.elasticModel"] = std::string(elasticModelName(settings.elasticModel));
   project.simulation.integrator = settings.integrator == Integrator::Paper ? "paper" : "implicit-euler";
   project.simulation.timeStepS = settings.timeStep;
   project.simulation.gravity = settings.gravity;

@@ -37,7 +37,8 @@ struct ProjectScene {
 };
 
 /// The scene of `project`, read from the file `from` (relative surface paths are relative to
-/// it). Throws std::runtime_error with a sentence naming `name` when its surface file is missing.
+/// it). Throws FileError, a sentence naming `name`, when its control mesh does not
+/// validate or its surface is not a readable file (missing, a directory, a device, too large).
 ProjectScene projectScene(Project project, const std::filesystem::path& from,
                           const std::string& name, const SceneSettings& defaults);
 
