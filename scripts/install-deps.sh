@@ -38,6 +38,9 @@ PACKAGES=(
   ffmpeg             # sculpt --record-out NAME.mp4 (H.264); ffprobe checks it in the GUI tests
   blender            # Blender 3.4 imports the recorded .glb in the tests (tests/anim)
   python3-numpy      # Blender's glTF importer needs numpy
+  # Fuzzing (scripts/fuzz.sh, docs/fuzzing.md).
+  clang-14           # libFuzzer builds need clang; the normal build stays on g++
+  libclang-rt-14-dev # libFuzzer and the clang sanitizer runtimes
 )
 # The glTF validator (scripts/install-gltf-validator.sh) runs on node and installs with npm; a
 # machine that already has them (e.g. from NodeSource) keeps its own.

@@ -3,7 +3,8 @@
 #
 #   scripts/test.sh              Release build in build/, then ctest
 #   scripts/test.sh --sanitize   RelWithDebInfo build in build-sanitize/ with
-#                                AddressSanitizer + UndefinedBehaviorSanitizer, then ctest
+#                                AddressSanitizer + UndefinedBehaviorSanitizer, then ctest,
+#                                then 15 s of every fuzz target (scripts/fuzz.sh all 15)
 #   scripts/test.sh --tsan       RelWithDebInfo build in build-tsan/ with ThreadSanitizer
 #
 # Warnings in our own code are errors here (-DSCULPT_WERROR=ON). Tests that open windows run under
@@ -14,7 +15,7 @@ ROOT="$(cd "$(dirname "${BASH_SOURCE[0]}")/.." && pwd)"
 cd "$ROOT"
 
 usage() {
-  sed -n '2,10p' "${BASH_SOURCE[0]}" | sed 's/^# \{0,1\}//'
+  sed -n '2,11p' "${BASH_SOURCE[0]}" | sed 's/^# \{0,1\}//'
 }
 
 SANITIZE=0
@@ -89,6 +90,9 @@ if [[ $SANITIZE -eq 1 ]]; then
   # and UBSan still check the window tests.
   run_ctest -LE gui
   ASAN_OPTIONS="${ASAN_OPTIONS/detect_leaks=1/detect_leaks=0}" run_ctest -L gui
+  # The readers again, on inputs libFuzzer makes up (clang-14, in build-fuzz/; docs/fuzzing.md).
+  stage "fuzz: 15 s per file reader (scripts/fuzz.sh all 15)"
+  FUZZ_BUILD_JOBS="$JOBS" bash "$ROOT/scripts/fuzz.sh" all 15
 else
   run_ctest
 fi

@@ -1,13 +1,16 @@
 #include "project/preferences.h"
 
 #include <algorithm>
+#include <climits>
 #include <cmath>
 #include <cstdlib>
 #include <nlohmann/json.hpp>
 #include <system_error>
+#include <type_traits>
 
 #include "io/atomic_file.h"
 #include "io/file_error.h"
+#include "io/input_file.h"
 
 namespace sculpt {
 namespace {
@@ -16,6 +19,21 @@ using nlohmann::json;
 
 constexpr const char* kFormatName = "sculpt-preferences";
 constexpr int kFormatVersion = 1;
+
+/// Whether get<int>() is defined for the value: nlohmann converts numbers with a plain cast,
+/// which is undefined for a float outside int's range (1e300) and wraps a large integer.
+bool convertsToInt(const json& value) {
+  if (value.is_number_unsigned()) return value.get<uint64_t>() <= uint64_t{INT_MAX};
+  if (value.is_number_integer()) {
+    const int64_t v = value.get<int64_t>();
+    return v >= INT_MIN && v <= INT_MAX;
+  }
+  if (value.is_number_float()) {
+    const double v = value.get<double>();
+    return v > INT_MIN - 1.0 && v < INT_MAX + 1.0;  // false for NaN
+  }
+  return true;  // not a number: get<int>() throws (or reads a bool)
+}
 
 // Reads one field if present and of the right kind; otherwise keeps the default and notes it.
 class FieldReader {
@@ -27,6 +45,12 @@ class FieldReader {
     const auto it = root_.find(key);
     if (it == root_.end()) return;
     try {
+      if constexpr (std::is_same_v<T, int>) {
+        if (!convertsToInt(*it)) {
+          notice(key);
+          return;
+        }
+      }
       T value = it->get<T>();
       if (valid(value)) {
         out = value;
@@ -34,10 +58,14 @@ class FieldReader {
       }
     } catch (const json::exception&) {
     }
-    if (problem_.empty()) problem_ = std::string("\"") + key + "\" has an unusable value";
+    notice(key);
   }
 
  private:
+  void notice(const char* key) {
+    if (problem_.empty()) problem_ = std::string("\"") + key + "\" has an unusable value";
+  }
+
   const json& root_;
   std::string& problem_;
 };
@@ -73,7 +101,7 @@ LoadedPreferences loadPreferences(const std::filesystem::path& path) {
   const std::string suffix = "; using the defaults";
   json root;
   try {
-    const std::string text = readFile(path);
+    const std::string text = readInputFile(path, kPreferencesInput);
     root = json::parse(text);
   } catch (const FileError& e) {
     result.warning = std::string(e.what()) + suffix;

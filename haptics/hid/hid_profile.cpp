@@ -219,6 +219,8 @@ HidProfile parseHidProfile(std::string_view jsonText, const std::string& source)
     root = json::parse(jsonText.begin(), jsonText.end());
   } catch (const json::parse_error& error) {
     throw FileError(source + ": not valid JSON (" + error.what() + ")");
+  } catch (const json::exception&) {  // out_of_range: a number beyond double's range
+    throw FileError(source + ": not valid JSON (a number is out of range, not finite)");
   }
   if (!root.is_object()) throw FileError(source + ": a profile must be a JSON object");
   const ObjectReader reader(root, "", source);
