@@ -91,16 +91,6 @@ std::optional<LoadedMesh> loadValidControlMesh(const std::string& path) {
   return loaded;
 }
 
-uint64_t estimateRefinedCells(const Topology& topology, int levels) {
-  if (levels <= 0) return topology.numCells();
-  uint64_t cells = topology.cellVertices.values.size();  // one child per (cell, corner)
-  for (int level = 1; level < levels; ++level) {
-    if (cells > kMaxEstimatedCells * 8) break;  // already far beyond any limit
-    cells *= 8;
-  }
-  return cells;
-}
-
 ProgressReporter stderrProgress() {
   struct State {
     std::chrono::steady_clock::time_point start = std::chrono::steady_clock::now();

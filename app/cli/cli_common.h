@@ -22,9 +22,8 @@ inline constexpr int kExitSuccess = 0;
 /// Bad input or usage: the message names the file, the element and the problem.
 inline constexpr int kExitBadInput = 2;
 
-/// Most levels any subcommand refines, and the most level-K cells it will build.
+/// Most levels any subcommand refines (what fits is checked by subdiv/refinement_cost.h).
 inline constexpr int kMaxLevels = 6;
-inline constexpr uint64_t kMaxEstimatedCells = 50'000'000;
 
 class CliArgs;
 
@@ -59,10 +58,6 @@ std::optional<LoadedMesh> loadValidControlMesh(const std::string& path);
 
 /// Number of error-severity issues.
 size_t countErrors(const std::vector<ValidationIssue>& issues);
-
-/// Rough number of cells after `levels` MJ steps: each cell with k corners yields k cells, then
-/// each cell about 8. Saturates instead of overflowing.
-uint64_t estimateRefinedCells(const Topology& topology, int levels);
 
 /// Prints a line on stderr whenever the reported stage changes, with the elapsed time.
 ProgressReporter stderrProgress();

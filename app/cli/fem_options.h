@@ -44,7 +44,8 @@ double parseNumber(const std::string& text, const std::string& option);
 /// boxes. Throws UsageError when a box contains no control point.
 void applyConstraintsAndForces(Simulator& simulator, const FemCommandOptions& options);
 
-/// Builds the model, printing one error line on failure.
+/// Builds the model, printing one error line on failure or, before allocating, when the model
+/// and its simulation would not fit in the memory available (subdiv/refinement_cost.h).
 std::optional<FemModel> buildFemModel(const CellComplex& control, const FemSetup& setup,
                                       const std::string& file);
 

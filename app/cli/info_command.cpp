@@ -16,6 +16,7 @@
 #include "mesh/topology.h"
 #include "mesh/validation.h"
 #include "subdiv/mj_refiner.h"
+#include "subdiv/refinement_cost.h"
 #include "subdiv/regularity.h"
 
 namespace sculpt::cli {
@@ -103,11 +104,8 @@ void printValidation(const std::vector<ValidationIssue>& issues) {
 // Refines and prints the level-K section; returns false (after an error line) when refused.
 bool printLevel(const std::string& file, const CellComplex& mesh, const Topology& topology,
                 int levels) {
-  const uint64_t estimate = estimateRefinedCells(topology, levels);
-  if (estimate > kMaxEstimatedCells) {
-    printError(file + ": level " + std::to_string(levels) + " would have about " +
-               std::to_string(estimate) + " cells (more than " +
-               std::to_string(kMaxEstimatedCells) + "); use fewer levels");
+  if (const std::string refusal = refinementRefusal(topology, levels, file); !refusal.empty()) {
+    printError(refusal);
     return false;
   }
   ProgressReporter progress = stderrProgress();
@@ -138,11 +136,17 @@ std::string percent(uint32_t part, uint32_t whole) {
 
 // The element line of level `levels` (>= 1), with the default material. A model that cannot be
 // built is reported on the line: the mesh itself is valid, so this is no error of info.
-void printElements(const CellComplex& mesh, const Topology& topology, int levels) {
-  const uint64_t estimate = estimateRefinedCells(topology, levels);
-  if (estimate > kMaxFemCells) {
-    std::cout << "  fem: not built (about " << estimate << " cells; info builds elements for at "
+void printElements(const std::string& file, const CellComplex& mesh, const Topology& topology,
+                   int levels) {
+  const uint64_t cells = estimateRefinementCost(topology, levels).cells;
+  if (cells > kMaxFemCells) {
+    std::cout << "  fem: not built (about " << cells << " cells; info builds elements for at "
               << "most " << kMaxFemCells << ")\n";
+    return;
+  }
+  if (const std::string refusal = refinementRefusal(topology, levels, file, kFiniteElements);
+      !refusal.empty()) {
+    std::cout << "  fem: not built (" << refusal << ")\n";
     return;
   }
   FemSetup setup;
@@ -198,7 +202,7 @@ int info(const CliArgs& args, std::string& file) {
     return printError(validationFailure(file, issues, "listed above"));
   }
   if (withLevels && !printLevel(file, mesh, *topology, levels)) return kExitBadInput;
-  if (withLevels && levels >= 1) printElements(mesh, *topology, levels);
+  if (withLevels && levels >= 1) printElements(file, mesh, *topology, levels);
   return kExitSuccess;
 }
 

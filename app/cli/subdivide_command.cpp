@@ -14,6 +14,7 @@
 #include "io/vtk_writer.h"
 #include "mesh/topology.h"
 #include "subdiv/mj_refiner.h"
+#include "subdiv/refinement_cost.h"
 
 namespace sculpt::cli {
 
@@ -54,12 +55,9 @@ int subdivideCommand(const CliArgs& args, std::string& file) {
   const std::optional<LoadedMesh> loaded = loadValidControlMesh(control);
   if (!loaded) return kExitBadInput;
   const Topology controlTopology = buildTopology(loaded->mesh);
-  const uint64_t estimate = estimateRefinedCells(controlTopology, levels);
-  if (estimate > kMaxEstimatedCells) {
-    return printError(control + ": level " + std::to_string(levels) + " would have about " +
-                      std::to_string(estimate) + " cells (more than " +
-                      std::to_string(kMaxEstimatedCells) + "); use fewer levels");
-  }
+  if (const std::string refusal = refinementRefusal(controlTopology, levels, control);
+      !refusal.empty())
+    return printError(refusal);
 
   // Level 0 is the control mesh itself; otherwise refine.
   std::optional<Subdivision> result;

@@ -17,6 +17,7 @@
 #include "subdiv/catmull_clark_surface.h"
 #include "subdiv/loop_surface.h"
 #include "subdiv/mj_refiner.h"
+#include "subdiv/refinement_cost.h"
 #include "subdiv/regularity.h"
 
 namespace sculpt {
@@ -225,6 +226,12 @@ std::optional<SceneBuildPhase1> buildPhase1(const SceneSource& source,
   // The solid at level K and its cells
   BuildStage refineSolid(progress, 0.05, 0.06, "subdividing the solid");
   if (!refineSolid.start()) return std::nullopt;
+  // Phase 2 builds the elements and the solver on these cells: refuse before either phase
+  // allocates when the whole would not fit.
+  if (const std::string refusal =
+          refinementRefusal(buildTopology(shape.control), settings.level, sourceName, kSimulation);
+      !refusal.empty())
+    throw std::runtime_error(refusal);
   std::optional<Subdivision> subdivision =
       subdivide(shape.control, settings.level, refineSolid.reporter());
   if (!subdivision) return std::nullopt;

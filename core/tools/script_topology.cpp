@@ -2,9 +2,13 @@
 
 #include <stdexcept>
 
+#include "mesh/topology.h"
+#include "subdiv/refinement_cost.h"
+
 namespace sculpt {
 
-CellComplex applyTopologyEvents(const CellComplex& mesh, SessionScript& script) {
+CellComplex applyTopologyEvents(const CellComplex& mesh, SessionScript& script,
+                                int simulationLevel) {
   CellComplex edited = mesh;
   std::vector<ScriptEvent> remaining;
   for (const ScriptEvent& event : script.events) {
@@ -13,12 +17,19 @@ CellComplex applyTopologyEvents(const CellComplex& mesh, SessionScript& script) 
       remaining.push_back(event);
       continue;
     }
+    const std::string name = "events[" + std::to_string(event.index) + "] (topology " +
+                             topologyOpName(topology->op) + "): ";
     try {
       edited = applyTopologyOperation(edited, *topology).mesh;
     } catch (const std::invalid_argument& e) {
-      throw std::invalid_argument("events[" + std::to_string(event.index) + "] (topology " +
-                                  topologyOpName(topology->op) + "): " + e.what());
+      throw std::invalid_argument(name + e.what());
     }
+    if (simulationLevel < 0) continue;
+    const std::string editedName =
+        "the edited mesh (" + std::to_string(edited.numCells()) + " cells)";
+    const std::string refusal =
+        refinementRefusal(buildTopology(edited), simulationLevel, editedName, kSimulation);
+    if (!refusal.empty()) throw std::invalid_argument(name + refusal);
   }
   script.events = std::move(remaining);
   return edited;

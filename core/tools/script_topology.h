@@ -12,7 +12,11 @@ namespace sculpt {
 /// Applies the script's topology events to `mesh` in file order and removes them from the script
 /// (what remains can be given to ScriptPlayer). Throws std::invalid_argument naming the event,
 /// e.g. "events[0] (topology extrude): face 0 of cell 13 is not on the boundary.", leaving the
-/// script unchanged.
-CellComplex applyTopologyEvents(const CellComplex& mesh, SessionScript& script);
+/// script unchanged. With simulationLevel >= 0 (0: trilinear elements on the edited mesh), each
+/// event is also refused, the same way, once the mesh it leaves could not be simulated at that
+/// level in the memory available (subdiv/refinement_cost.h): a few whole-mesh subdivisions
+/// multiply the cells by 8 each, and the next event never runs.
+CellComplex applyTopologyEvents(const CellComplex& mesh, SessionScript& script,
+                                int simulationLevel = -1);
 
 }  // namespace sculpt

@@ -111,6 +111,8 @@ struct SessionScript {
   std::vector<ScriptEvent> events;  ///< in file order
   /// The latest endTime() (0 without events).
   double duration() const;
+  /// The event with the latest endTime() (the first of them), nullptr without events.
+  const ScriptEvent* lastEvent() const;
 };
 
 /// Parses the JSON text. Throws FileError (io/control_mesh_json.h) with one sentence prefixed by

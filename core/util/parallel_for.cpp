@@ -5,6 +5,7 @@
 #include <chrono>
 #include <condition_variable>
 #include <cstdlib>
+#include <exception>
 #include <mutex>
 #include <thread>
 #include <vector>
@@ -148,12 +149,22 @@ void parallelChunks(uint32_t n, uint32_t minParallel,
     return;
   }
   auto chunkBegin = [&](unsigned k) { return static_cast<uint32_t>(uint64_t(n) * k / workers); };
+  // An exception escaping a pool thread would terminate the program, and one leaving the
+  // caller's chunk early would return while the workers still use `body`: every chunk catches
+  // its own, and the first (by chunk) is rethrown on the caller once all chunks are done.
+  std::vector<std::exception_ptr> failures(workers);
   pool().run(workers, [&](unsigned k) {
     const bool outer = insideParallelLoop;
     insideParallelLoop = true;
-    body(chunkBegin(k), chunkBegin(k + 1), k);
+    try {
+      body(chunkBegin(k), chunkBegin(k + 1), k);
+    } catch (...) {
+      failures[k] = std::current_exception();
+    }
     insideParallelLoop = outer;
   });
+  for (const std::exception_ptr& failure : failures)
+    if (failure) std::rethrow_exception(failure);
 }
 
 }  // namespace sculpt

@@ -12,6 +12,8 @@ unsigned workerCount();
 
 /// Calls body(begin, end, worker) for disjoint contiguous chunks covering [0, n). Runs inline
 /// when n < minParallel. Chunk k is handled by worker k, so per-worker buffers may be indexed by it.
+/// An exception thrown by body (std::bad_alloc, say) is rethrown here once every chunk has
+/// ended; when several chunks throw, the lowest chunk's exception wins.
 void parallelChunks(uint32_t n, uint32_t minParallel,
                     const std::function<void(uint32_t begin, uint32_t end, unsigned worker)>& body);
 

@@ -208,6 +208,25 @@ inline CellComplex singlePrism() {
   return makeComplex(p, {orient(p, prismLoops({0, 1, 2, 3, 4, 5}))});
 }
 
+/// One prism over a regular n-gon of unit radius, z in [0, 1]: 2n vertices (0..n-1 below,
+/// n..2n-1 above), two n-gon faces and n quads. A cell and faces this wide are what makes
+/// stencils grow quadratically.
+inline CellComplex ngonPrism(uint32_t n) {
+  std::vector<Eigen::Vector3d> p;
+  for (int z = 0; z <= 1; ++z)
+    for (uint32_t i = 0; i < n; ++i) {
+      const double a = 2.0 * 3.14159265358979323846 * i / n;
+      p.emplace_back(std::cos(a), std::sin(a), double(z));
+    }
+  Loops faces(2);
+  for (uint32_t i = 0; i < n; ++i) {
+    faces[0].push_back(n - 1 - i);  // seen from below
+    faces[1].push_back(n + i);
+    faces.push_back({i, (i + 1) % n, n + (i + 1) % n, n + i});
+  }
+  return makeComplex(p, {faces});
+}
+
 inline CellComplex singlePyramid() {
   std::vector<Eigen::Vector3d> p = {{0, 0, 0}, {1, 0, 0}, {1, 1, 0}, {0, 1, 0}, {0.5, 0.5, 0.8}};
   return makeComplex(p, {orient(p, pyramidLoops({0, 1, 2, 3, 4}))});
