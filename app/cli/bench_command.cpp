@@ -22,6 +22,7 @@
 #include "mesh/topology.h"
 #include "sim/standard_forms.h"
 #include "subdiv/mj_refiner.h"
+#include "subdiv/refinement_cost.h"
 #include "util/parallel_for.h"
 
 namespace sculpt::cli {
@@ -103,12 +104,9 @@ int benchSubdivide(const CliArgs& args, std::string& file) {
   const std::optional<LoadedMesh> loaded = loadValidControlMesh(control);
   if (!loaded) return kExitBadInput;
   const CellComplex& mesh = loaded->mesh;
-  const uint64_t estimate = estimateRefinedCells(buildTopology(mesh), levels);
-  if (estimate > kMaxEstimatedCells) {
-    return printError(control + ": level " + std::to_string(levels) + " would have about " +
-                      std::to_string(estimate) + " cells (more than " +
-                      std::to_string(kMaxEstimatedCells) + "); use fewer levels");
-  }
+  if (const std::string refusal = refinementRefusal(buildTopology(mesh), levels, control);
+      !refusal.empty())
+    return printError(refusal);
   std::cout << "file=" << control << " control_cells=" << mesh.numCells()
             << " control_vertices=" << mesh.numVertices() << '\n'
             << "threads=" << workerCount() << " levels=" << levels << " repeat=" << repeat
@@ -171,14 +169,7 @@ int benchFem(const CliArgs& args, std::string& file) {
   const std::optional<LoadedMesh> loaded = loadValidControlMesh(control);
   if (!loaded) return kExitBadInput;
   const CellComplex& mesh = loaded->mesh;
-  if (!options.setup.trilinear) {
-    const uint64_t estimate = estimateRefinedCells(buildTopology(mesh), options.setup.level);
-    if (estimate > kMaxEstimatedCells) {
-      return printError(control + ": level " + std::to_string(options.setup.level) +
-                        " would have about " + std::to_string(estimate) + " cells (more than " +
-                        std::to_string(kMaxEstimatedCells) + "); use fewer levels");
-    }
-  }
+  // buildFemModel below refuses a level that would not fit before it allocates.
   std::cout << "file=" << control << " control_cells=" << mesh.numCells()
             << " control_vertices=" << mesh.numVertices() << '\n';
   std::cout.flush();

@@ -8,7 +8,9 @@
 
 #include "cli/cli_common.h"
 #include "io/vtk_writer.h"
+#include "mesh/topology.h"
 #include "sim/standard_forms.h"
+#include "subdiv/refinement_cost.h"
 
 namespace sculpt::cli {
 
@@ -112,6 +114,12 @@ void applyConstraintsAndForces(Simulator& simulator, const FemCommandOptions& op
 
 std::optional<FemModel> buildFemModel(const CellComplex& control, const FemSetup& setup,
                                       const std::string& file) {
+  if (const std::string refusal = refinementRefusal(
+          buildTopology(control), setup.trilinear ? 0 : setup.level, file, kSimulation);
+      !refusal.empty()) {
+    printError(refusal);
+    return std::nullopt;
+  }
   std::string error;
   ProgressReporter progress = stderrProgress();
   auto model = FemModel::create(control, setup, &error, &progress);

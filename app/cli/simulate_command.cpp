@@ -23,6 +23,7 @@
 #include "sim/standard_forms.h"
 #include "tools/script_topology.h"
 #include "tools/session_script.h"
+#include "util/short_number.h"
 #include "project/project_file.h"
 #include "scene/control_export.h"
 #include "scene/scene_file.h"
@@ -199,13 +200,36 @@ void printTotals(const StepTotals& totals, double time, double maxDisplacement,
       jacobians.invertedElements);
 }
 
+// "events[3] (inflate) ends at t=1e+09 s": the event that sets the script's length.
+std::string lastEventText(const SessionScript& script) {
+  const ScriptEvent* last = script.lastEvent();
+  return "events[" + std::to_string(last->index) + "] (" + last->typeName() +
+         ") ends at t=" + shortNumber(last->endTime()) + " s";
+}
+
+// --steps, or the script's length in steps (`extra` for a build's own first step). A script
+// longer than kMaxSteps is refused rather than cut short hours later; a --steps that ends
+// before the script does gets a note, as its last events will not be reached.
 int stepsFor(const CliArgs& args, const std::optional<SessionScript>& script, double timeStep,
              int extra) {
   if (!args.has("steps") && !script) throw UsageError("--steps is required (or --script)");
-  return args.has("steps")
-             ? args.intValue("steps", 0, 1, kMaxSteps)
-             : static_cast<int>(std::clamp(
-                   std::ceil(script->duration() / timeStep - 1e-9) + extra, 1.0, double(kMaxSteps)));
+  const std::string scriptName = args.value("script").value_or("the script");
+  if (args.has("steps")) {
+    const int steps = args.intValue("steps", 0, 1, kMaxSteps);
+    if (script && script->lastEvent() &&
+        double(steps - extra) * timeStep < script->duration() * (1 - 1e-12))
+      std::cerr << "simulate: note: --steps " << steps
+                << " ends at t=" << shortNumber(double(steps - extra) * timeStep) << " s, before "
+                << scriptName << "'s " << lastEventText(*script) << '\n';
+    return steps;
+  }
+  const double needed = std::ceil(script->duration() / timeStep - 1e-9) + extra;
+  if (needed > double(kMaxSteps))
+    throw UsageError(scriptName + ": " + lastEventText(*script) + ", which takes " +
+                     shortNumber(needed) + " steps of " + shortNumber(timeStep) + " s (at most " +
+                     std::to_string(kMaxSteps) +
+                     "); use a larger --dt, or --steps to run part of it");
+  return static_cast<int>(std::max(needed, 1.0));
 }
 
 // A surface or a project, built and run by the scene pipeline the window uses (core/scene).
@@ -260,7 +284,8 @@ int simulateCommand(const CliArgs& args, std::string& file) {
   if (script) {
     const size_t events = script->events.size();
     try {
-      control = applyTopologyEvents(control, *script);
+      control = applyTopologyEvents(control, *script,
+                                    options.setup.trilinear ? 0 : options.setup.level);
     } catch (const std::invalid_argument& e) {
       return printError(args.requiredValue("script") + ": " + e.what());
     }

@@ -247,6 +247,14 @@ void scenePanel(AppModel& m) {
     int integrator = s.integrator == Integrator::Implicit ? 0 : 1;
     bool changed = ImGui::Combo("Integrator", &integrator, "Implicit (stable)\0Paper (CG, explicit)\0");
     s.integrator = integrator == 0 ? Integrator::Implicit : Integrator::Paper;
+    int model = s.elasticModel == ElasticModel::Barrier ? 0 : 1;
+    if (ImGui::Combo("Elastic model", &model, "Inversion barrier\0Co-rotated (paper)\0")) {
+      s.elasticModel = model == 0 ? ElasticModel::Barrier : ElasticModel::Corotated;
+      changed = true;
+    }
+    if (ImGui::IsItemHovered())
+      ImGui::SetTooltip("The barrier pushes back parts squeezed below half their volume and turns "
+                        "inverted ones back; both models agree until then.");
     double dtMs = s.timeStep * 1000.0;
     if (logSlider("Time step", &dtMs, 0.1, 100.0, "%.2f ms")) {
       s.timeStep = dtMs / 1000.0;

@@ -295,8 +295,14 @@ void SculptApp::runAction(Action action) {
 
 void SculptApp::handleInput(const ViewRect& view) {
   const ImGuiIO& io = ImGui::GetIO();
+  // Shortcuts act whenever no text is being typed and either the panels do not want the keys
+  // or the pointer is over the 3D view (a panel clicked last keeps ImGui's focus otherwise).
+  const bool overView = !io.WantCaptureMouse && io.MousePos.x >= view.min.x &&
+                        io.MousePos.x < view.max.x && io.MousePos.y >= view.min.y &&
+                        io.MousePos.y < view.max.y;
+  viewHasKeys_ = !io.WantTextInput && (!io.WantCaptureKeyboard || overView);
   const bool brushKeyHeld = brushKeys(io, io.MousePos.x - lastCursorX_);
-  if (!io.WantCaptureKeyboard) {
+  if (viewHasKeys_) {
     for (int key = GLFW_KEY_SPACE; key <= GLFW_KEY_LAST; ++key)
       if (ImGui::IsKeyPressed(key, false) && !(brushKeyHeld && key == brushKey_))
         if (const std::optional<Action> action = keys_.actionFor(key, glfwModifiers(io)))

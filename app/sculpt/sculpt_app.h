@@ -118,6 +118,7 @@ class SculptApp {
   void applyTopology(const std::vector<FaceRef>& picked);
   std::vector<FaceRef> withMirroredFaces(const std::vector<FaceRef>& faces) const;
   bool brushKeys(const ImGuiIO& io, float dx);  // F / Shift+F drag; true while it owns the mouse
+  bool viewHasKeys_ = true;  // this frame's shortcuts go to the view (handleInput)
   void drawToolOverlay(const ViewRect& view);
   // Document (sculpt_document.cpp)
   void startDocumentFromScene(const SceneGeometry& geometry);

@@ -207,7 +207,8 @@ void SculptApp::brushStroke(const PointerResult& stroke, float x, float y, int w
     StrokeCapture* capture = recording_->capturing();
     const double now = recording_->takeTime();
     if (strokeTool_ == ToolKind::Inflate) {
-      const InflateStroke::Settings settings{radius, t.pressure * t.strength};
+      const double pressure = t.pressureFraction * model_.settings.material.youngs;
+      const InflateStroke::Settings settings{radius, pressure * t.strength};
       tool = std::make_unique<InflateStroke>(settings);
       if (capture)
         capture->beginInflate(now, hit->rest, settings,
@@ -452,7 +453,7 @@ bool SculptApp::brushKeys(const ImGuiIO& io, float dx) {
   // F + drag sets the radius and Shift+F + drag the strength (docs/design/ux.md); F alone still frames.
   ToolState& t = model_.tools;
   if (brushKey_ < 0) {
-    if (!isBrushTool(t.tool) || io.WantCaptureKeyboard || !ImGui::IsKeyPressed(GLFW_KEY_F, false) ||
+    if (!isBrushTool(t.tool) || !viewHasKeys_ || !ImGui::IsKeyPressed(GLFW_KEY_F, false) ||
         io.KeyCtrl || io.KeyAlt)
       return false;
     brushKey_ = GLFW_KEY_F;

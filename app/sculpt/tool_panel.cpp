@@ -6,6 +6,7 @@ namespace sculpt::app {
 namespace {
 
 void mirrorSettings(ToolState& t);
+void pressureSlider(ToolState& t, double youngs);
 
 constexpr double kExtrudeMin = 0.05, kExtrudeMax = 5.0;
 
@@ -25,6 +26,18 @@ void brushSettings(ToolState& t) {
       t.falloff = static_cast<Falloff>(falloff);
   }
   if (t.tool == ToolKind::Paint) mirrorSettings(t);
+}
+
+// In Pa, over a range that follows the scene's Young's modulus (ToolState::pressureFraction).
+void pressureSlider(ToolState& t, double youngs) {
+  double pressure = t.pressureFraction * youngs;
+  if (logSliderDouble("Pressure", &pressure, kMinPressureFraction * youngs,
+                      kMaxPressureFraction * youngs, "%.3g Pa"))
+    t.pressureFraction = pressure / youngs;
+  if (ImGui::IsItemHovered())
+    ImGui::SetTooltip("Up to a tenth of the solid's Young's modulus (%.3g Pa): above about a "
+                      "third an inflated patch has no equilibrium and runs away.",
+                      youngs);
 }
 
 // Symmetry planes through the centre of the control mesh's box (paint and topology).
@@ -60,7 +73,7 @@ void drawToolSettings(AppModel& m) {
     case ToolKind::Inflate:
       ImGui::TextWrapped("Hold on the surface. Ctrl deflates.");
       brushSettings(t);
-      logSliderDouble("Pressure", &t.pressure, 1e2, 1e7, "%.3g Pa");
+      pressureSlider(t, m.settings.material.youngs);
       break;
     case ToolKind::Curve:
       ImGui::TextWrapped("Draw a curve on the surface, then drag it with Shift.");

@@ -67,7 +67,7 @@ void storeToolState(const ToolState& s, ToolSettings& t) {
   t["tool.mirrorY"] = s.mirrorY;
   t["tool.mirrorZ"] = s.mirrorZ;
   t["tool.keepOnRelease"] = s.keepOnRelease;
-  t["tool.pressure"] = s.pressure;
+  t["tool.pressureFraction"] = s.pressureFraction;
   t["tool.paintField"] = static_cast<double>(static_cast<int>(s.field));
   t["tool.paintYoungs"] = s.paint.youngs;
   t["tool.paintDensity"] = s.paint.density;
@@ -87,7 +87,9 @@ ToolState loadToolState(const ToolSettings& t) {
   s.mirrorY = get(t, "tool.mirrorY", false);
   s.mirrorZ = get(t, "tool.mirrorZ", false);
   s.keepOnRelease = get(t, "tool.keepOnRelease", false);
-  s.pressure = clampFinite(get(t, "tool.pressure", s.pressure), 1.0, 1e9, 3e4);
+  s.pressureFraction =
+      clampFinite(get(t, "tool.pressureFraction", s.pressureFraction), kMinPressureFraction,
+                  kMaxPressureFraction, kDefaultPressureFraction);
   s.field = static_cast<PaintField>(clampIndex(get(t, "tool.paintField", 0.0), 3, 0));
   s.paint.youngs = clampFinite(get(t, "tool.paintYoungs", s.paint.youngs), 1e3, 1e9, 3e7);
   s.paint.density = clampFinite(get(t, "tool.paintDensity", s.paint.density), 1.0, 1e5, 3000);

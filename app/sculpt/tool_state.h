@@ -31,6 +31,9 @@ const char* topologyToolName(TopologyTool operation);
 /// Operations that need two faces (the first click selects, the second applies).
 bool needsTwoFaces(TopologyTool operation);
 
+inline constexpr double kMinPressureFraction = 1e-4, kMaxPressureFraction = 0.1;
+inline constexpr double kDefaultPressureFraction = 0.05;
+
 struct ToolState {
   ToolKind tool = ToolKind::Pull;
   // Brush (docs/design/ux.md: radius in screen pixels)
@@ -40,8 +43,10 @@ struct ToolState {
   bool mirrorX = true, mirrorY = false, mirrorZ = false;
   // Pull
   bool keepOnRelease = false;
-  // Inflate: pressure in Pa (Ctrl deflates)
-  double pressure = 3.0e4;
+  // Inflate: the pressure as a fraction of the scene's Young's modulus (Ctrl deflates), so that
+  // the default visibly inflates any scene and the largest still has an equilibrium: an
+  // inflated patch of a co-rotated solid runs away above about a third of E (docs/fem.md).
+  double pressureFraction = kDefaultPressureFraction;
   // Paint: which field and the values painted
   PaintField field = PaintField::Youngs;
   Material paint{3000.0, 2000.0, 3.0e7, 0.3};  // density, damping, E, nu

@@ -31,6 +31,12 @@ inline constexpr InputFormat kVolumeMeshInput{"a volume-mesh file", 4 * kGiB};
 // A project holds a control mesh, its material samples and perhaps an embedded OBJ surface.
 inline constexpr InputFormat kProjectInput{"a project file", 4 * kGiB};
 
+// Session scripts, device scripts and preferences are small JSON written by hand or by a take;
+// 256 MiB is hours of recorded strokes, 16 MiB far more settings than the window has.
+inline constexpr InputFormat kSessionScriptInput{"a session script", 256u << 20};
+inline constexpr InputFormat kDeviceScriptInput{"a device script", 256u << 20};
+inline constexpr InputFormat kPreferencesInput{"a preferences file", 16u << 20};
+
 /// Checks, without opening it, that `path` names a regular file (symbolic links followed) of
 /// at most format.maxBytes bytes, and returns its size. Throws FileError naming the file:
 /// "<path>: cannot open (No such file or directory)", "<path>: is a FIFO (named pipe), not a

@@ -11,6 +11,7 @@
 #include <stdexcept>
 
 #include "io/file_error.h"
+#include "io/input_file.h"
 #include "io/json_nesting.h"
 #include "sim/material_point.h"
 #include "tools/pin_tool.h"
@@ -348,9 +349,15 @@ double ScriptEvent::endTime() const {
 }
 
 double SessionScript::duration() const {
-  double end = 0;
-  for (const ScriptEvent& e : events) end = std::max(end, e.endTime());
-  return end;
+  const ScriptEvent* last = lastEvent();
+  return last ? std::max(0.0, last->endTime()) : 0.0;
+}
+
+const ScriptEvent* SessionScript::lastEvent() const {
+  const ScriptEvent* last = nullptr;
+  for (const ScriptEvent& e : events)
+    if (!last || e.endTime() > last->endTime()) last = &e;
+  return last;
 }
 
 SessionScript parseSessionScript(std::string_view text, std::string_view sourceName) {
@@ -416,12 +423,7 @@ SessionScript parseSessionScript(std::string_view text, std::string_view sourceN
 }
 
 SessionScript loadSessionScript(const std::filesystem::path& path) {
-  std::ifstream in(path, std::ios::binary);
-  if (!in) throw FileError(path.string() + ": cannot open the session script.");
-  std::ostringstream text;
-  text << in.rdbuf();
-  if (in.bad()) throw FileError(path.string() + ": cannot read the session script.");
-  return parseSessionScript(text.str(), path.string());
+  return parseSessionScript(readInputFile(path, kSessionScriptInput), path.string());
 }
 
 // ---------------------------------------------------------------------------------------------

@@ -11,6 +11,8 @@
 #include <nlohmann/json.hpp>
 
 #include "haptics/servo/haptic_tool.h"
+#include "io/file_error.h"
+#include "io/input_file.h"
 #include "io/json_fields.h"
 
 namespace sculpt::haptics {
@@ -224,11 +226,15 @@ DeviceScript parseDeviceScript(const nlohmann::json& script) {
 
 DeviceScript loadDeviceScript(const std::filesystem::path& path) {
   const std::string file = path.string();
-  std::ifstream in(path);
-  if (!in) fail(file, ": cannot open the device script");
+  std::string text;
+  try {
+    text = readInputFile(path, kDeviceScriptInput);
+  } catch (const FileError& e) {  // "<file>: is a FIFO ...", "<file>: cannot open (...)"
+    fail(e.what(), " (the device script)");
+  }
   json script;
   try {
-    script = json::parse(in);
+    script = json::parse(text);
   } catch (const json::parse_error& e) {
     fail(file, ": not valid JSON (", e.what(), ")");
   }

@@ -184,7 +184,7 @@ TEST_F(SculptSession, InflatePinCurveSaveAndOpenOnBlock3) {
 
   // Inflate grows the solid while held; Ctrl deflates it below where it started.
   tools.tool = ToolKind::Inflate;
-  tools.pressure = 3.0e5;
+  tools.pressureFraction = kMaxPressureFraction;
   tools.strength = 1.0f;
   tools.radiusPixels = 150.0f;
   const double settled = deformedVolume(mesh, app_->sceneView().frame().control);
@@ -383,7 +383,7 @@ TEST_F(SculptSession, StrokesOfATakeAreMarkedOnTheTimelineAndSavedAsAScriptThatR
   release();
   tools.tool = ToolKind::Inflate;
   tools.radiusPixels = 120.0f;
-  tools.pressure = 3.0e4;
+  tools.pressureFraction = 0.01;
   drag(ImVec2(middle.x + 10, middle.y + 10), 0.0f, 0.0f, 1);
   frames(8);
   release();

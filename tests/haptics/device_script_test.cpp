@@ -214,7 +214,8 @@ TEST(DeviceScript, LoadsAFileAndPrefixesItsErrorsWithTheFileName) {
             bad.string() + ": \"model\" must be \"touch\" or \"omni\", got \"falcon\"");
 
   const auto missing = dir / "missing.json";
-  EXPECT_EQ(errorLoading(missing), missing.string() + ": cannot open the device script");
+  EXPECT_EQ(errorLoading(missing),
+            missing.string() + ": cannot open (No such file or directory) (the device script)");
   std::filesystem::remove_all(dir);
 }
 
