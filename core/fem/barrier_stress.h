@@ -5,6 +5,7 @@
 // forces as they do their own stress (det and cofactor are unchanged by the proper rotation R).
 
 #include <Eigen/Core>
+#include <cstddef>
 
 #include "fem/elastic_model.h"
 
@@ -95,6 +96,32 @@ void addBarrierHessian(const V (&A)[3][3], const V (&dA)[3][3], const V& bulk,
       S[r][m] += slope * change;
     }
   }
+}
+
+/// One kernel group of Gauss points (the lanes of V): with `gradientMode`, A = M + R^T (M the
+/// lanes' R^T grad u) gets its barrier stress added to S, is recorded at `block` (9 values per
+/// lane, lanes fastest) and psi is returned; otherwise (Hessian mode, M the direction's
+/// R^T grad d) the recorded state's second derivative along M is added. Zero when nothing acts.
+template <class V>
+V applyBarrier(BarrierArgs& b, const V (&M)[3][3], const Eigen::Matrix3d& R, const V& volumeLambda,
+               const V& volumeMu, bool gradientMode, size_t block, V (&S)[3][3]) {
+  constexpr int kLanes = V::SizeAtCompileTime;
+  const V bulk = volumeLambda + (2.0 / 3.0) * volumeMu;
+  V A[3][3];
+  V psi = V::Zero();
+  if (gradientMode) {
+    for (int r = 0; r < 3; ++r)
+      for (int c = 0; c < 3; ++c) A[r][c] = M[r][c] + R(c, r);
+    if (b.settings) psi = addBarrierStress(A, bulk, *b.settings, S, b.active);
+    if (b.record)
+      for (int rc = 0; rc < 9; ++rc)
+        Eigen::Map<V>(b.record + (block * 9 + size_t(rc)) * kLanes) = A[rc / 3][rc % 3];
+  } else if (b.state && b.settings) {
+    for (int rc = 0; rc < 9; ++rc)
+      A[rc / 3][rc % 3] = Eigen::Map<const V>(b.state + (block * 9 + size_t(rc)) * kLanes);
+    addBarrierHessian(A, M, bulk, *b.settings, S);
+  }
+  return psi;
 }
 
 }  // namespace sculpt

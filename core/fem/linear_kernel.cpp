@@ -46,22 +46,8 @@ double linearElementKernel(const double* u, const LinearPacked& element, const E
       else S[s][r] = S[r][s];
     }
   if (withBarrier) {
-    const V8 bulk = vl + (2.0 / 3.0) * vm;
-    V8 A[3][3];  // R^T F (gradient mode) or its change along the direction (Hessian mode)
-    if (withRestTerm) {
-      for (int r = 0; r < 3; ++r)
-        for (int c = 0; c < 3; ++c) A[r][c] = M[r][c] + R(c, r);
-      if (barrier->settings) {
-        const V8 psi = addBarrierStress(A, bulk, *barrier->settings, S, barrier->active);
-        if (withEnergy) energy += psi.sum();
-      }
-      if (barrier->record)
-        for (int rc = 0; rc < 9; ++rc) Eigen::Map<V8>(barrier->record + rc * 8) = A[rc / 3][rc % 3];
-    } else if (barrier->state) {
-      for (int rc = 0; rc < 9; ++rc)
-        A[rc / 3][rc % 3] = Eigen::Map<const V8>(barrier->state + rc * 8);
-      addBarrierHessian(A, M, bulk, *barrier->settings, S);
-    }
+    const V8 psi = applyBarrier(*barrier, M, R, vl, vm, withRestTerm, 0, S);
+    if (withEnergy) energy += psi.sum();
   }
   if (!gradient) return energy;
   // g'_a = sum_q S_q dN_a(q), then g_a = R g'_a.

@@ -161,21 +161,8 @@ double tricubicElementKernel(const double* u, const TricubicPacked& element,
         else S[s][r] = S[r][s];
       }
     if (barrier && (barrier->settings || barrier->record)) {
-      const V4 bulk = vl + (2.0 / 3.0) * vm;
-      V4 A[3][3];  // R^T F (gradient mode) or its change along the direction (Hessian mode)
-      if (withRestTerm) {
-        for (int r = 0; r < 3; ++r)
-          for (int col = 0; col < 3; ++col) A[r][col] = M[r][col] + R(col, r);
-        if (barrier->settings) {
-          const V4 psi = addBarrierStress(A, bulk, *barrier->settings, S, barrier->active);
-          if (withEnergy) energyLanes += psi;
-        }
-        if (barrier->record)
-          for (int rc = 0; rc < 9; ++rc) store(barrier->record + ij * 36 + rc * 4, A[rc / 3][rc % 3]);
-      } else if (barrier->state) {
-        for (int rc = 0; rc < 9; ++rc) A[rc / 3][rc % 3] = load(barrier->state + ij * 36 + rc * 4);
-        addBarrierHessian(A, M, bulk, *barrier->settings, S);
-      }
+      const V4 psi = applyBarrier(*barrier, M, R, vl, vm, withRestTerm, size_t(ij), S);
+      if (withEnergy) energyLanes += psi;
     }
     if (withEnergy) {
       V4 ee = e[0][0] * e[0][0] + e[1][1] * e[1][1] + e[2][2] * e[2][2] +

@@ -96,15 +96,8 @@ TEST_F(MemoryLimitsCliTest, LevelsBeyondTheMemoryAreRefused) {
 TEST_F(MemoryLimitsCliTest, TopologyEventsThatMultiplyTheCellsAreRefused) {
   // Three whole-mesh subdivisions of block3's 27 cells: 216, 1728, then 13824 cells, whose
   // level 2 (884,736 cells) would take tens of GB.
-  std::string events;
-  for (uint32_t cells : {27u, 216u, 1728u}) {
-    std::string ids;
-    for (uint32_t c = 0; c < cells; ++c) ids += (c ? "," : "") + std::to_string(c);
-    events += std::string(events.empty() ? "" : ",\n") +
-              R"({"t": 0, "type": "topology", "op": "subdivide", "cells": [)" + ids + "]}";
-  }
   const std::string script = path("subdivide3.json");
-  writeText(script, R"({"format": "sculpt-session", "version": 1, "events": [)" + events + "]}");
+  writeText(script, test::block3SubdividedThreeTimesScript());
   ScopedEnvironment limit("SCULPT_MEMORY_LIMIT_MB", "8000");
   expectBadInput("simulate " + quote(kAssets + "block3.json") +
                      " --levels 2 --dt 0.01 --steps 1 --script " + quote(script) + " --out " +

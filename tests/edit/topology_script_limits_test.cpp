@@ -16,15 +16,7 @@ namespace {
 
 // Three subdivisions of every cell of block3: 216, 1728, then 13824 cells.
 SessionScript threeWholeMeshSubdivisions() {
-  std::string events;
-  for (uint32_t cells : {27u, 216u, 1728u}) {
-    std::string ids;
-    for (uint32_t c = 0; c < cells; ++c) ids += (c ? "," : "") + std::to_string(c);
-    events += std::string(events.empty() ? "" : ",") +
-              R"({"t": 0, "type": "topology", "op": "subdivide", "cells": [)" + ids + "]}";
-  }
-  return parseSessionScript(
-      R"({"format": "sculpt-session", "version": 1, "events": [)" + events + "]}", "s.json");
+  return parseSessionScript(test::block3SubdividedThreeTimesScript(), "s.json");
 }
 
 TEST(TopologyScriptLimits, AnEventWhoseResultCannotBeSimulatedIsRefused) {

@@ -57,22 +57,7 @@ void writeText(const fs::path& path, const std::string& text) {
 // The FileError message of read(path). A FIFO that the reader opens instead of refusing would
 // block it: it is released after a few seconds, and the result says so.
 std::string errorOf(const Reader& read, const fs::path& path, const fs::path& fifo = {}) {
-  std::string message = "no error";
-  const auto body = [&] {
-    try {
-      read(path);
-    } catch (const FileError& error) {
-      message = error.what();
-    } catch (const std::exception& error) {
-      message = std::string("not a FileError: ") + error.what();
-    }
-  };
-  if (fifo.empty()) {
-    body();
-  } else if (!test::runReleasingFifo(fifo, body)) {
-    message = "blocked on the FIFO (then: " + message + ")";
-  }
-  return message;
+  return test::fileErrorMessage<FileError>([&] { read(path); }, fifo);
 }
 
 TEST(InputFile, DevicesFifosAndDirectoriesAreRefusedByType) {

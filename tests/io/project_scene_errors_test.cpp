@@ -24,22 +24,9 @@ namespace fs = std::filesystem;
 // released after a few seconds, and the result says so.
 std::string sceneError(const Project& project, const fs::path& path, const fs::path& fifo = {}) {
   saveProject(project, path);
-  std::string message = "no error";
-  const auto body = [&] {
-    try {
-      projectScene(loadProject(path), path, path.filename().string(), SceneSettings{});
-    } catch (const FileError& error) {
-      message = error.what();
-    } catch (const std::exception& error) {
-      message = std::string("not a FileError: ") + error.what();
-    }
-  };
-  if (fifo.empty()) {
-    body();
-  } else if (!test::runReleasingFifo(fifo, body)) {
-    message = "blocked on the FIFO (then: " + message + ")";
-  }
-  return message;
+  return test::fileErrorMessage<FileError>(
+      [&] { projectScene(loadProject(path), path, path.filename().string(), SceneSettings{}); },
+      fifo);
 }
 
 TEST(ProjectSceneErrors, InvalidControlMeshNamesTheProject) {

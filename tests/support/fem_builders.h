@@ -37,6 +37,20 @@ inline CellComplex block3() {
 }
 
 /// rows x 3 values uniform in [-amplitude, amplitude].
+/// The elastic kernel's gradient at x, and its Hessian applied to v, on their own.
+inline Points kernelGradient(const ElasticKernel& kernel, const Points& x) {
+  Points g = Points::Zero(x.rows(), 3);
+  kernel.addGradient(x, g);
+  return g;
+}
+inline Points kernelHessianProduct(const ElasticKernel& kernel, const Points& v) {
+  Points h = Points::Zero(v.rows(), 3);
+  kernel.addHessianProduct(v, h);
+  return h;
+}
+/// The sum of the entrywise products (the dot product of the flattened arrays).
+inline double dot(const Points& a, const Points& b) { return (a.array() * b.array()).sum(); }
+
 inline Points randomPoints(Eigen::Index rows, double amplitude, std::mt19937_64& rng) {
   std::uniform_real_distribution<double> uni(-amplitude, amplitude);
   Points p(rows, 3);

@@ -11,6 +11,8 @@
 #include <filesystem>
 #include <functional>
 #include <future>
+#include <stdexcept>
+#include <string>
 
 namespace sculpt::test {
 
@@ -28,6 +30,29 @@ inline bool runReleasingFifo(const std::filesystem::path& fifo, const std::funct
   } while (done.wait_for(std::chrono::milliseconds(100)) != std::future_status::ready);
   done.get();
   return false;
+}
+
+/// The FileError message of `read()` ("no error" when it succeeds, "not a FileError: ..." for
+/// another exception); with `fifo`, a read blocked on it is released and the result says so.
+template <class FileErrorType>
+std::string fileErrorMessage(const std::function<void()>& read,
+                             const std::filesystem::path& fifo = {}) {
+  std::string message = "no error";
+  const auto body = [&] {
+    try {
+      read();
+    } catch (const FileErrorType& error) {
+      message = error.what();
+    } catch (const std::exception& error) {
+      message = std::string("not a FileError: ") + error.what();
+    }
+  };
+  if (fifo.empty()) {
+    body();
+  } else if (!runReleasingFifo(fifo, body)) {
+    message = "blocked on the FIFO (then: " + message + ")";
+  }
+  return message;
 }
 
 }  // namespace sculpt::test

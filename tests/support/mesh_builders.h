@@ -482,4 +482,17 @@ inline std::map<uint32_t, double> stencilRow(const StencilTable& s, uint32_t r) 
   return row;
 }
 
+/// A session script (JSON text) of three topology events that subdivide every cell of block3
+/// in turn: 27, then 216, then 1728 cells in, 13824 out.
+inline std::string block3SubdividedThreeTimesScript() {
+  std::string events;
+  for (uint32_t cells : {27u, 216u, 1728u}) {
+    std::string ids;
+    for (uint32_t c = 0; c < cells; ++c) ids += (c ? "," : "") + std::to_string(c);
+    events += std::string(events.empty() ? "" : ",\n") +
+              R"({"t": 0, "type": "topology", "op": "subdivide", "cells": [)" + ids + "]}";
+  }
+  return R"({"format": "sculpt-session", "version": 1, "events": [)" + events + "]}";
+}
+
 }  // namespace sculpt::test
