@@ -128,6 +128,7 @@ void ElasticKernel::setModel(ElasticModel model, const InversionBarrier& barrier
   barrierSlot_.clear();
   barrierState_.clear();
   barrierElements_ = 0;
+  barrierStale_ = false;
 }
 
 ElasticKernel::Jacobians ElasticKernel::jacobians(const Points& nodes) const {
@@ -158,7 +159,20 @@ ElasticKernel::Jacobians ElasticKernel::jacobians(const Points& nodes) const {
   return result;
 }
 
-void ElasticKernel::keepBarrierRecords(const std::vector<BarrierRecord>& records) {
+uint32_t ElasticKernel::barrierElements() const {
+  refreshBarrier();
+  return barrierElements_;
+}
+
+void ElasticKernel::refreshBarrier() const {
+  if (!barrierStale_) return;
+  std::vector<BarrierRecord> records;
+  run(barrierNodes_, Mode::Gradient, nullptr, false, nullptr, nullptr, &records);
+  keepBarrierRecords(records);
+  barrierStale_ = false;
+}
+
+void ElasticKernel::keepBarrierRecords(const std::vector<BarrierRecord>& records) const {
   barrierSlot_.assign(mesh_.numElements(), -1);
   barrierState_.clear();
   barrierElements_ = 0;
@@ -238,11 +252,9 @@ void ElasticKernel::updateGroupRotations(uint32_t first, int count, const double
 }
 
 void ElasticKernel::updateRotations(const Points& nodes) {
-  if (model_ == ElasticModel::Barrier) {  // the barrier's state needs every Gauss point
-    std::vector<BarrierRecord> records;
-    run(nodes, Mode::Gradient, nullptr, false, nullptr, rotations_.data(), &records);
-    keepBarrierRecords(records);
-    return;
+  if (model_ == ElasticModel::Barrier) {
+    barrierNodes_ = nodes;
+    barrierStale_ = true;
   }
   loadSource(nodes, true);
   parallelChunks(mesh_.numElements(), 256, [&](uint32_t begin, uint32_t end, unsigned) {
@@ -260,6 +272,7 @@ void ElasticKernel::updateRotationsAndAddGradient(const Points& nodes, Points& g
   run(nodes, Mode::Gradient, &gradient, false, nullptr, rotations_.data(),
       model_ == ElasticModel::Barrier ? &records : nullptr);
   keepBarrierRecords(records);
+  barrierStale_ = false;
 }
 
 double ElasticKernel::energy(const Points& nodes) const {
@@ -276,6 +289,7 @@ void ElasticKernel::addGradient(const Points& nodes, Points& gradient) const {
 }
 
 void ElasticKernel::addHessianProduct(const Points& dx, Points& result) const {
+  refreshBarrier();
   run(dx, Mode::HessianProduct, &result, false);
 }
 

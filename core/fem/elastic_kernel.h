@@ -52,7 +52,7 @@ class ElasticKernel {
   ElasticModel model() const { return model_; }
   const InversionBarrier& barrier() const { return barrier_; }
   /// Elements with a Gauss point below the barrier's threshold at the last rotation update.
-  uint32_t barrierElements() const { return barrierElements_; }
+  uint32_t barrierElements() const;
 
   /// det F over every Gauss point at `nodes` (any model): how compressed, or inverted, it is.
   struct Jacobians {
@@ -82,7 +82,11 @@ class ElasticKernel {
              double* perElement = nullptr, Eigen::Matrix3d* newRotations = nullptr,
              std::vector<BarrierRecord>* records = nullptr, bool recordAll = false) const;
   // barrierSlot_ and barrierState_ from the workers' records of a rotation update.
-  void keepBarrierRecords(const std::vector<BarrierRecord>& records);
+  void keepBarrierRecords(const std::vector<BarrierRecord>& records) const;
+  // Records the barrier's state at the last updateRotations' nodes if it has not been yet: that
+  // update only finds the rotations (it mostly precedes an energy query), and the record costs a
+  // whole element pass, so it is made when a Hessian product first needs it.
+  void refreshBarrier() const;
   // Gathers element e's node values of x into ue in the kernels' coordinate-major layout;
   // returns the node count.
   uint32_t gatherElement(uint32_t e, const NodeRows& x, double* ue) const;
@@ -103,9 +107,11 @@ class ElasticKernel {
   ElasticModel model_ = ElasticModel::Corotated;  // the Simulator sets the scene's
   InversionBarrier barrier_;
   // Per element the start of its recorded R^T F in barrierState_, or -1 (nothing recorded).
-  std::vector<int64_t> barrierSlot_;
-  std::vector<double> barrierState_;
-  uint32_t barrierElements_ = 0;
+  mutable std::vector<int64_t> barrierSlot_;
+  mutable std::vector<double> barrierState_;
+  mutable uint32_t barrierElements_ = 0;
+  mutable bool barrierStale_ = false;  // barrierNodes_ are newer than the record
+  Points barrierNodes_;
   mutable std::vector<NodeRows> workerBuffers_;
   mutable NodeRows source_;  // the pass's input: x - rest (gradient mode) or the direction
   // Rows of the node vectors above are in the kernel's numbering: meshNode_[k] is the mesh
