@@ -1,6 +1,6 @@
 // Shortcuts go to the 3D view whenever no text is being typed: while a text field is being
 // edited its keys are its own, even with the pointer over the view, and once it is left the
-// view's shortcuts act again.
+// view's shortcuts act again. File > Open's dialog takes the keyboard as it opens.
 
 #include <gtest/gtest.h>
 
@@ -42,6 +42,18 @@ TEST_F(SculptSession, ShortcutsActOverTheViewUnlessATextFieldIsBeingEdited) {
   frames(1);
   press(GLFW_KEY_Z, false);
   EXPECT_EQ(app_->model().display.wireframe, wireframe);
+}
+
+TEST_F(SculptSession, FileOpenFocusesItsPathField) {
+  open();
+  frames(3);
+  ASSERT_FALSE(ImGui::GetIO().WantTextInput);
+  press(GLFW_KEY_O, true);  // Ctrl+O
+  frames(2);
+  // The dialog's field has the keyboard: typed text goes there, not to the Scene panel's field.
+  EXPECT_TRUE(ImGui::GetIO().WantTextInput);
+  press(GLFW_KEY_Z, false);
+  EXPECT_FALSE(app_->model().display.wireframe) << "Z reached the view with the dialog open";
 }
 
 }  // namespace
