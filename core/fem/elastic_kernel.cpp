@@ -268,9 +268,12 @@ void ElasticKernel::updateRotations(const Points& nodes) {
 }
 
 void ElasticKernel::updateRotationsAndAddGradient(const Points& nodes, Points& gradient) {
+  if (model_ != ElasticModel::Barrier) {
+    run(nodes, Mode::Gradient, &gradient, false, nullptr, rotations_.data());
+    return;
+  }
   std::vector<BarrierRecord> records;
-  run(nodes, Mode::Gradient, &gradient, false, nullptr, rotations_.data(),
-      model_ == ElasticModel::Barrier ? &records : nullptr);
+  run(nodes, Mode::Gradient, &gradient, false, nullptr, rotations_.data(), &records);
   keepBarrierRecords(records);
   barrierStale_ = false;
 }

@@ -16,6 +16,7 @@
 #include "fem/elastic_kernel.h"
 #include "fem/fem_model.h"
 #include "support/fem_builders.h"
+#include "support/mixed_mesh_kernel.h"
 #include "support/mesh_builders.h"
 
 namespace sculpt {
@@ -23,18 +24,11 @@ namespace {
 
 using namespace sculpt::test;
 
-class GradientConsistency : public ::testing::Test {
+class GradientConsistency : public MixedMeshKernelTest {
  protected:
   void SetUp() override {
-    std::string error;
-    model_ =
-        FemModel::create(jittered(mixedMesh(), 0.05, 8), FemSetup{2, false, Material{}}, &error);
-    ASSERT_TRUE(model_) << error;
-    const ElementCounts c = model_->mesh().counts();
-    ASSERT_GT(c.tricubic, 0u);
-    ASSERT_GT(c.trilinear, 0u);
-    ASSERT_GT(c.pyramid, 0u);
-    L_ = std::cbrt(model_->mesh().restVolume() / model_->mesh().numElements());
+    MixedMeshKernelTest::SetUp();
+    if (HasFatalFailure()) return;
     // x0: rest nodes, randomly perturbed (about 5% strain), then rotated and translated, so
     // the frozen rotations are far from the identity and differ between elements.
     std::mt19937_64 rng(2024);
@@ -46,13 +40,6 @@ class GradientConsistency : public ::testing::Test {
       x0_.row(i) = (Q * noisy.row(i).transpose()).transpose() + Eigen::RowVector3d(1, 2, 3);
     model_->elastic().updateRotations(x0_);
   }
-  Points gradient(const Points& x) const { return kernelGradient(model_->elastic(), x); }
-  Points hessianProduct(const Points& v) const {
-    return kernelHessianProduct(model_->elastic(), v);
-  }
-  std::optional<FemModel> model_;
-  Points x0_;
-  double L_ = 0;
 };
 
 TEST_F(GradientConsistency, EnergyDifferencesMatchGradient) {

@@ -17,6 +17,7 @@
 #include "fem/elastic_kernel.h"
 #include "fem/fem_model.h"
 #include "support/fem_builders.h"
+#include "support/mixed_mesh_kernel.h"
 #include "support/mesh_builders.h"
 
 namespace sculpt {
@@ -24,14 +25,11 @@ namespace {
 
 using namespace sculpt::test;
 
-class InversionBarrierTest : public ::testing::Test {
+class InversionBarrierTest : public MixedMeshKernelTest {
  protected:
   void SetUp() override {
-    std::string error;
-    model_ =
-        FemModel::create(jittered(mixedMesh(), 0.05, 8), FemSetup{2, false, Material{}}, &error);
-    ASSERT_TRUE(model_) << error;
-    L_ = std::cbrt(model_->mesh().restVolume() / model_->mesh().numElements());
+    MixedMeshKernelTest::SetUp();
+    if (HasFatalFailure()) return;
     std::mt19937_64 rng(2026);
     const Eigen::Matrix3d Q = randomRotation(rng);
     const Points& X = model_->mesh().restNodes;
@@ -54,13 +52,6 @@ class InversionBarrierTest : public ::testing::Test {
     model_->elastic().setModel(ElasticModel::Barrier, barrier);
     model_->elastic().updateRotations(x0_);
   }
-  Points gradient(const Points& x) const { return kernelGradient(model_->elastic(), x); }
-  Points hessianProduct(const Points& v) const {
-    return kernelHessianProduct(model_->elastic(), v);
-  }
-  std::optional<FemModel> model_;
-  Points x0_;
-  double L_ = 0;
 };
 
 TEST_F(InversionBarrierTest, TheStateIsCompressedBelowTheThresholdAndPartlyInverted) {
