@@ -21,6 +21,8 @@ PACKAGES=(
   libtinygltf-dev    # glTF import and export
   libstb-dev         # stb_image_write: PNG figures and screenshots
   nlohmann-json3-dev # JSON control meshes and scripts
+  libsuitesparse-dev # CHOLMOD: the implicit solver's supernodal Cholesky preconditioner (core)
+  libopenblas0-pthread # an optimised BLAS behind libblas.so.3 for CHOLMOD's dense blocks
   # Tool chain.
   cmake
   g++

@@ -1,6 +1,7 @@
 #include "sim/linear_stiffness.h"
 
 #include <Eigen/LU>
+#include <array>
 
 #include "fem/quadrature.h"
 #include "fem/trilinear_shape.h"
@@ -22,6 +23,30 @@ void addGaussPointStiffness(const LinearShapeGradient& g, double volume, const L
     }
 }
 
+// The 8 nodes of element e's stand-in: a trilinear or pyramid element's own, a tricubic
+// element's cell corners (block [1,2]^3 of its 4^3 nodes) in trilinear order.
+std::array<uint32_t, 8> standInCorners(const FemMesh& mesh, uint32_t e) {
+  if (e >= mesh.numTricubic()) return mesh.linearNodes[e - mesh.numTricubic()];
+  std::array<uint32_t, 8> ids;
+  const auto& block = mesh.tricubicNodes[e];
+  for (int a = 0; a < 8; ++a) {
+    const int* corner = kTrilinearCorner[a];
+    ids[a] = block[(1 + corner[0]) * 16 + (1 + corner[1]) * 4 + (1 + corner[2])];
+  }
+  return ids;
+}
+
+LameParameters meanLame(const FemMesh& mesh, std::span<const LameParameters> lame, uint32_t e) {
+  const uint32_t g0 = mesh.gaussBegin(e);
+  const int count = e < mesh.numTricubic() ? kTricubicGaussPoints : kLinearGaussPoints;
+  LameParameters mean;
+  for (int q = 0; q < count; ++q) {
+    mean.lambda += lame[g0 + q].lambda / count;
+    mean.mu += lame[g0 + q].mu / count;
+  }
+  return mean;
+}
+
 }  // namespace
 
 SparseMatrix kroneckerIdentity3(const SparseMatrix& scalar) {
@@ -37,27 +62,31 @@ SparseMatrix kroneckerIdentity3(const SparseMatrix& scalar) {
 }
 
 SparseMatrix reducedLinearStiffness(const FemModel& model) {
-  const FemMesh& mesh = model.mesh();
+  return reducedLinearStiffness(model.mesh(), model.mesh().gaussLame, model.stencilMatrix());
+}
+
+Eigen::VectorXd controlPointModulus(const FemMesh& mesh, std::span<const LameParameters> lame,
+                                    const SparseMatrix& A) {
+  Eigen::VectorXd nodeModulus = Eigen::VectorXd::Zero(Eigen::Index(mesh.numNodes()));
+  for (uint32_t e = 0; e < mesh.numElements(); ++e) {
+    const LameParameters m = meanLame(mesh, lame, e);
+    for (uint32_t id : standInCorners(mesh, e)) nodeModulus[id] += m.lambda + 2 * m.mu;
+  }
+  return A.transpose() * nodeModulus;
+}
+
+SparseMatrix reducedLinearStiffness(const FemMesh& mesh, std::span<const LameParameters> lame,
+                                    const SparseMatrix& A) {
   const QuadratureRule gauss2 = gaussLegendre(2);
   std::vector<Eigen::Triplet<double>> triplets;
   triplets.reserve(size_t(mesh.numElements()) * 24 * 24);
   ElementStiffness K;
   for (uint32_t e = 0; e < mesh.numElements(); ++e) {
     K.setZero();
-    std::array<uint32_t, 8> ids;
+    const std::array<uint32_t, 8> ids = standInCorners(mesh, e);
     const uint32_t g0 = mesh.gaussBegin(e);
     if (e < mesh.numTricubic()) {
-      // The cell is block [1,2]^3: its corners in trilinear order.
-      const auto& block = mesh.tricubicNodes[e];
-      for (int a = 0; a < 8; ++a) {
-        const int* corner = kTrilinearCorner[a];
-        ids[a] = block[(1 + corner[0]) * 16 + (1 + corner[1]) * 4 + (1 + corner[2])];
-      }
-      LameParameters lame;  // the element's mean material
-      for (int q = 0; q < kTricubicGaussPoints; ++q) {
-        lame.lambda += mesh.gaussLame[g0 + q].lambda / kTricubicGaussPoints;
-        lame.mu += mesh.gaussLame[g0 + q].mu / kTricubicGaussPoints;
-      }
+      const LameParameters mean = meanLame(mesh, lame, e);
       for (int i = 0; i < 2; ++i)
         for (int j = 0; j < 2; ++j)
           for (int k = 0; k < 2; ++k) {
@@ -74,14 +103,13 @@ SparseMatrix reducedLinearStiffness(const FemModel& model) {
             if (!(det > 0)) continue;  // a corner hexahedron may be poor; skip its point
             addGaussPointStiffness(dNdXi * J.inverse(),
                                    gauss2.weights[i] * gauss2.weights[j] * gauss2.weights[k] * det,
-                                   lame, K);
+                                   mean, K);
           }
     } else {
       const uint32_t l = e - mesh.numTricubic();
-      ids = mesh.linearNodes[l];
       for (int q = 0; q < kLinearGaussPoints; ++q)
         addGaussPointStiffness(mesh.linearShapeGradient[size_t(l) * 8 + q],
-                               mesh.gaussVolume[g0 + q], mesh.gaussLame[g0 + q], K);
+                               mesh.gaussVolume[g0 + q], lame[g0 + q], K);
     }
     for (int a = 0; a < 8; ++a)
       for (int b = 0; b < 8; ++b)
@@ -92,7 +120,7 @@ SparseMatrix reducedLinearStiffness(const FemModel& model) {
   const int n = int(mesh.numNodes());
   SparseMatrix nodeK(3 * n, 3 * n);
   nodeK.setFromTriplets(triplets.begin(), triplets.end());
-  const SparseMatrix A3 = kroneckerIdentity3(model.stencilMatrix());
+  const SparseMatrix A3 = kroneckerIdentity3(A);
   return reduceToControlPoints(A3, nodeK);
 }
 

@@ -4,6 +4,8 @@
 // trilinear hexahedron on its cell's 8 corner nodes (spectrally close: both discretise the same
 // elasticity on the same lattice). Reduced to the control points as (A x I3)^T K (A x I3).
 
+#include <span>
+
 #include "fem/fem_model.h"
 #include "fem/mass_matrix.h"
 
@@ -11,6 +13,16 @@ namespace sculpt {
 
 /// 3N by 3N (control point i, coordinate c at row 3i + c), rest geometry, current materials.
 SparseMatrix reducedLinearStiffness(const FemModel& model);
+/// The same for the Gauss-point materials `lame` (one per Gauss point of `mesh`), with A the
+/// control-to-node stencil matrix: usable on a copy of the materials away from the model.
+SparseMatrix reducedLinearStiffness(const FemMesh& mesh, std::span<const LameParameters> lame,
+                                    const SparseMatrix& A);
+
+/// Per control point, A^T v with v_n the sum, over the stand-in elements with corner node n, of
+/// their mean P-wave modulus lambda + 2 mu: how strongly the materials around the point weigh in
+/// the stand-in's diagonal. Its ratio between two material states rescales a factor.
+Eigen::VectorXd controlPointModulus(const FemMesh& mesh, std::span<const LameParameters> lame,
+                                    const SparseMatrix& A);
 
 /// The scalar matrix S acting on each coordinate: S x I3 in the interleaved numbering.
 SparseMatrix kroneckerIdentity3(const SparseMatrix& scalar);

@@ -43,7 +43,7 @@ Simulator::Simulator(FemModel& model, SimulationSettings settings)
     : model_(model),
       settings_(validated(settings)),
       elastic_(std::make_unique<ElasticForm>(model, settings.corotated)),
-      preconditioner_(std::make_unique<SystemPreconditioner>()) {
+      preconditioner_(std::make_unique<SystemPreconditioner>(settings.preconditionerRefresh)) {
   model.elastic().setModel(settings_.elasticModel);
   const Eigen::Index n = model.numControlPoints();
   position_ = model.restControl();
@@ -60,6 +60,10 @@ Simulator::Simulator(FemModel& model, SimulationSettings settings)
 }
 
 Simulator::~Simulator() = default;
+
+const PreconditionerStats& Simulator::preconditionerStats() const {
+  return preconditioner_->stats();
+}
 
 std::string settingsProblem(const SimulationSettings& s) {
   if (!(s.timeStep > 0) || !std::isfinite(s.timeStep))
@@ -82,6 +86,7 @@ std::string Simulator::setSettings(const SimulationSettings& s) {
   if (s.corotated != settings_.corotated)
     elastic_ = std::make_unique<ElasticForm>(model_, s.corotated);
   if (s.elasticModel != model_.elastic().model()) model_.elastic().setModel(s.elasticModel);
+  preconditioner_->setRefresh(s.preconditionerRefresh);
   settings_ = s;
   return {};
 }
@@ -213,6 +218,7 @@ CgResult Simulator::newtonStep(const Points& gradient, bool withInertia, double 
     preconditioner_->apply(r, z);
   };
   const CgResult cg = conjugateGradient(op, pre, b, x, tolerance, settings_.maxIterations);
+  preconditioner_->reportIterations(cg.iterations);
   dx = Points::Zero(position_.rows(), 3);
   scatter(x, freeDofs_, dx);
   return cg;

@@ -21,13 +21,13 @@
 #include "fem/fem_model.h"
 #include "sim/conjugate_gradient.h"
 #include "sim/form.h"
+#include "sim/system_preconditioner.h"
 
 namespace sculpt {
 
 class ElasticForm;
 class InertiaForm;
 class DampingForm;
-class SystemPreconditioner;
 
 enum class Integrator { Paper, Implicit };
 const char* integratorName(Integrator integrator);
@@ -42,6 +42,9 @@ struct SimulationSettings {
   double implicitTolerance = 1e-6;  ///< relative CG residual of the implicit and static solves
   int maxIterations = 2000;         ///< CG iterations per solve
   int maxHalvings = 10;             ///< a failing step is retried with up to 2^this sub-steps
+  /// Synchronous: deterministic (same inputs, same bits). Background (the window): new
+  /// factors after edits are adopted as soon as the worker thread has them.
+  PreconditionerRefresh preconditionerRefresh = PreconditionerRefresh::Synchronous;
 };
 
 struct StepReport {
@@ -99,6 +102,8 @@ class Simulator {
   /// once fails. Converged: the residual is at most `tolerance` of the load, or at the rounding
   /// floor of the elastic forces (for loads tiny against the stiffness; said in the message).
   StaticReport solveStatic(double tolerance = 1e-9, int maxNewtonIterations = 40);
+
+  const PreconditionerStats& preconditionerStats() const;
 
   double kineticEnergy() const;  ///< 1/2 v^T M~ v
   double elasticEnergy();        ///< with rotations of the current state

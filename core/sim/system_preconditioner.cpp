@@ -1,36 +1,79 @@
 #include "sim/system_preconditioner.h"
 
+#include <chrono>
+
 #include "sim/linear_stiffness.h"
 
 namespace sculpt {
 
-bool SystemPreconditioner::update(const FemModel& model, double massScale, double dampingScale,
-                                  double stiffnessScale, const std::vector<int>& freeDofs) {
-  const uint64_t version = model.materialVersion();
-  const bool sameSystem = scales_[0] == massScale && scales_[1] == dampingScale &&
-                          scales_[2] == stiffnessScale && freeDofs_ == freeDofs;
-  ++solvesSinceRefresh_;
-  // Painting changes the materials many times per second. A preconditioner a few strokes old
-  // costs a few CG iterations, not accuracy, so material changes refactor at most every
-  // kMaterialRefreshInterval solves.
-  if (sameSystem && (materialVersion_ == version || solvesSinceRefresh_ < kMaterialRefreshInterval))
-    return valid_;
-  solvesSinceRefresh_ = 0;
-  if (stiffnessVersion_ != version || stiffness_.rows() == 0) {
-    stiffness_ = reducedLinearStiffness(model);
-    stiffnessVersion_ = version;
-  }
-  scales_[0] = massScale;
-  scales_[1] = dampingScale;
-  scales_[2] = stiffnessScale;
-  materialVersion_ = version;
-  freeDofs_ = freeDofs;
+struct SystemPreconditioner::Factor {
+  SparseCholesky cholesky;
+  bool valid = false;
+  double scales[3] = {0, 0, 0};
+  std::vector<int> freeDofs;
+  uint64_t materialVersion = 0;
+  Eigen::VectorXd stiffnessDiagonal;  // K~lin's diagonal (all 3N coordinates)
+  Eigen::VectorXd modulus;            // controlPointModulus of the factored materials
+  double milliseconds = 0;
+  explicit Factor(SparseCholesky::Method method) : cholesky(method) {}
+};
 
-  SparseMatrix S = stiffnessScale * stiffness_;
-  if (massScale != 0) S += massScale * kroneckerIdentity3(model.reducedMass());
-  if (dampingScale != 0) S += dampingScale * kroneckerIdentity3(model.reducedDamping());
+// What a factorisation needs, copied: the worker thread must not read the model while the
+// simulation paints it.
+struct SystemPreconditioner::Request {
+  const FemMesh* mesh = nullptr;
+  const SparseMatrix* A = nullptr;
+  std::vector<LameParameters> lame;
+  SparseMatrix mass, damping;
+  double scales[3] = {0, 0, 0};
+  std::vector<int> freeDofs;
+  uint64_t materialVersion = 0;
+};
+
+namespace {
+using Clock = std::chrono::steady_clock;
+}  // namespace
+
+SystemPreconditioner::SystemPreconditioner(PreconditionerRefresh refresh,
+                                           SparseCholesky::Method method)
+    : refresh_(refresh), method_(method) {}
+
+SystemPreconditioner::~SystemPreconditioner() {
+  if (pending_.valid()) pending_.wait();
+}
+
+namespace {
+
+SystemPreconditioner::Request requestFor(const FemModel& model, double a, double b, double c,
+                                         const std::vector<int>& freeDofs) {
+  SystemPreconditioner::Request request;
+  request.mesh = &model.mesh();
+  request.A = &model.stencilMatrix();
+  request.lame = model.mesh().gaussLame;
+  if (a != 0) request.mass = model.reducedMass();
+  if (b != 0) request.damping = model.reducedDamping();
+  request.scales[0] = a;
+  request.scales[1] = b;
+  request.scales[2] = c;
+  request.freeDofs = freeDofs;
+  request.materialVersion = model.materialVersion();
+  return request;
+}
+
+std::unique_ptr<SystemPreconditioner::Factor> factorRequest(
+    const SystemPreconditioner::Request& request, SparseCholesky::Method method) {
+  const Clock::time_point start = Clock::now();
+  auto factor = std::make_unique<SystemPreconditioner::Factor>(method);
+  const double a = request.scales[0], b = request.scales[1], c = request.scales[2];
+  const SparseMatrix stiffness = reducedLinearStiffness(*request.mesh, request.lame, *request.A);
+  factor->stiffnessDiagonal = stiffness.diagonal();
+  factor->modulus = controlPointModulus(*request.mesh, request.lame, *request.A);
+  SparseMatrix S = c * stiffness;
+  if (a != 0) S += a * kroneckerIdentity3(request.mass);
+  if (b != 0) S += b * kroneckerIdentity3(request.damping);
 
   // Restrict to the free coordinates.
+  const std::vector<int>& freeDofs = request.freeDofs;
   std::vector<int> freeIndex(size_t(S.rows()), -1);
   for (size_t k = 0; k < freeDofs.size(); ++k) freeIndex[size_t(freeDofs[k])] = int(k);
   std::vector<Eigen::Triplet<double>> triplets;
@@ -38,10 +81,10 @@ bool SystemPreconditioner::update(const FemModel& model, double massScale, doubl
   double diagonalSum = 0;
   for (int col = 0; col < S.outerSize(); ++col)
     for (SparseMatrix::InnerIterator it(S, col); it; ++it) {
-      const int r = freeIndex[size_t(it.row())], c = freeIndex[size_t(it.col())];
-      if (r < 0 || c < 0) continue;
-      triplets.emplace_back(r, c, it.value());
-      if (r == c) diagonalSum += it.value();
+      const int r = freeIndex[size_t(it.row())], cc = freeIndex[size_t(it.col())];
+      if (r < 0 || cc < 0) continue;
+      triplets.emplace_back(r, cc, it.value());
+      if (r == cc) diagonalSum += it.value();
     }
   const int n = int(freeDofs.size());
   SparseMatrix restricted(n, n);
@@ -54,16 +97,155 @@ bool SystemPreconditioner::update(const FemModel& model, double massScale, doubl
     if (shift > 0) {
       for (int i = 0; i < n; ++i) shifted.coeffRef(i, i) += shift * meanDiagonal;
     }
-    factor_.compute(shifted);
-    valid_ = factor_.info() == Eigen::Success;
-    if (valid_) break;
+    factor->valid = factor->cholesky.factor(shifted);
+    if (factor->valid) break;
   }
-  return valid_;
+  std::copy(request.scales, request.scales + 3, factor->scales);
+  factor->freeDofs = freeDofs;
+  factor->materialVersion = request.materialVersion;
+  factor->milliseconds =
+      std::chrono::duration<double, std::milli>(Clock::now() - start).count();
+  return factor;
+}
+
+}  // namespace
+
+std::unique_ptr<SystemPreconditioner::Factor> SystemPreconditioner::makeFactor(
+    const FemModel& model, double a, double b, double c, const std::vector<int>& freeDofs) const {
+  return factorRequest(requestFor(model, a, b, c, freeDofs), method_);
+}
+
+void SystemPreconditioner::adopt(std::unique_ptr<Factor> factor) {
+  factor_ = std::move(factor);
+  ++stats_.factorizations;
+  stats_.lastFactorMs = factor_->milliseconds;
+  stats_.factorNonZeros = factor_->cholesky.factorNonZeros();
+  freshIterations_ = -1;
+  drifted_ = false;
+  appliedMaterialVersion_ = ~uint64_t(0);  // the mapping and scaling are redone
+}
+
+void SystemPreconditioner::startBackground(const FemModel& model, double a, double b, double c,
+                                           const std::vector<int>& freeDofs) {
+  if (pending_.valid()) return;
+  solvesSinceStart_ = 0;
+  auto request = std::make_shared<Request>(requestFor(model, a, b, c, freeDofs));
+  const SparseCholesky::Method method = method_;
+  pending_ = std::async(std::launch::async,
+                        [request, method] { return factorRequest(*request, method); });
+}
+
+bool SystemPreconditioner::collectBackground(bool wait) {
+  if (!pending_.valid()) return false;
+  if (!wait && pending_.wait_for(std::chrono::seconds(0)) != std::future_status::ready)
+    return false;
+  std::unique_ptr<Factor> factor = pending_.get();
+  // A factor made for another time step is of no use (sub-steps refactor on the spot).
+  if (factor_ && !std::equal(factor->scales, factor->scales + 3, factor_->scales)) return false;
+  adopt(std::move(factor));
+  ++stats_.backgroundFactorizations;
+  return true;
+}
+
+bool SystemPreconditioner::update(const FemModel& model, double massScale, double dampingScale,
+                                  double stiffnessScale, const std::vector<int>& freeDofs) {
+  const double scales[3] = {massScale, dampingScale, stiffnessScale};
+  // A finished background factor is taken at once in the window; the deterministic mode
+  // takes it a fixed number of solves after it was started, waiting if it is late.
+  if (pending_.valid()) {
+    ++solvesSinceStart_;
+    if (refresh_ == PreconditionerRefresh::Background) collectBackground(false);
+    else if (solvesSinceStart_ >= kDeterministicDelay) collectBackground(true);
+  }
+  if (!factor_ || !std::equal(scales, scales + 3, factor_->scales)) {
+    if (pending_.valid()) pending_.wait();
+    pending_ = {};
+    adopt(makeFactor(model, massScale, dampingScale, stiffnessScale, freeDofs));
+  } else if (!pending_.valid() &&
+             (freeDofs != factor_->freeDofs ||
+              (drifted_ && model.materialVersion() != factor_->materialVersion))) {
+    // Pins or materials moved away from the factor: make a new one while this one serves.
+    startBackground(model, massScale, dampingScale, stiffnessScale, freeDofs);
+  }
+  if (appliedMaterialVersion_ != model.materialVersion() || freeDofs_ != freeDofs)
+    rescale(model, freeDofs);
+  return factor_->valid;
+}
+
+void SystemPreconditioner::rescale(const FemModel& model, const std::vector<int>& freeDofs) {
+  freeDofs_ = freeDofs;
+  appliedMaterialVersion_ = model.materialVersion();
+  const Factor& f = *factor_;
+  mapped_ = freeDofs != f.freeDofs;
+  const bool sameMaterials = model.materialVersion() == f.materialVersion;
+  if (!mapped_ && sameMaterials) {
+    inverseSqrtScale_.resize(0);
+    toFactor_.clear();
+    return;
+  }
+  // The current diagonal of S, with the stand-in stiffness's diagonal following the materials
+  // through the control points' modulus ratio.
+  const Eigen::VectorXd modulus =
+      sameMaterials ? f.modulus
+                    : controlPointModulus(model.mesh(), model.mesh().gaussLame,
+                                          model.stencilMatrix());
+  const Eigen::VectorXd mass = model.reducedMass().diagonal();
+  const Eigen::VectorXd damping = model.reducedDamping().diagonal();
+  auto diagonal = [&](int dof, const Eigen::VectorXd& mod) {
+    const int point = dof / 3;
+    const double ratio = f.modulus[point] > 0 ? mod[point] / f.modulus[point] : 1.0;
+    return f.scales[0] * mass[point] + f.scales[1] * damping[point] +
+           f.scales[2] * f.stiffnessDiagonal[dof] * ratio;
+  };
+  std::vector<int> factorIndex(f.stiffnessDiagonal.size(), -1);
+  for (size_t k = 0; k < f.freeDofs.size(); ++k) factorIndex[size_t(f.freeDofs[k])] = int(k);
+  const Eigen::Index n = Eigen::Index(freeDofs.size());
+  toFactor_.assign(freeDofs.size(), -1);
+  inverseSqrtScale_.setOnes(n);
+  currentDiagonal_.resize(n);
+  for (Eigen::Index k = 0; k < n; ++k) {
+    const int dof = freeDofs[size_t(k)];
+    toFactor_[size_t(k)] = factorIndex[size_t(dof)];
+    currentDiagonal_[k] = diagonal(dof, modulus);
+    if (!sameMaterials) {
+      const double factored = diagonal(dof, f.modulus);
+      if (factored > 0 && currentDiagonal_[k] > 0)
+        inverseSqrtScale_[k] = std::sqrt(factored / currentDiagonal_[k]);
+    }
+  }
+  if (!sameMaterials) ++stats_.rescalings;
 }
 
 void SystemPreconditioner::apply(const Eigen::VectorXd& r, Eigen::VectorXd& z) const {
-  if (valid_) z = factor_.solve(r);
-  else z = r;
+  if (!factor_ || !factor_->valid) {
+    z = r;
+    return;
+  }
+  if (inverseSqrtScale_.size() == 0) {
+    factor_->cholesky.solve(r, z);
+    return;
+  }
+  Eigen::VectorXd x = Eigen::VectorXd::Zero(Eigen::Index(factor_->freeDofs.size()));
+  for (Eigen::Index k = 0; k < r.size(); ++k)
+    if (const int j = toFactor_[size_t(k)]; j >= 0) x[j] = r[k] * inverseSqrtScale_[k];
+  Eigen::VectorXd y;
+  factor_->cholesky.solve(x, y);
+  z.resize(r.size());
+  for (Eigen::Index k = 0; k < r.size(); ++k) {
+    const int j = toFactor_[size_t(k)];
+    z[k] = j >= 0 ? y[j] * inverseSqrtScale_[k] : r[k] / currentDiagonal_[k];
+  }
+}
+
+void SystemPreconditioner::reportIterations(int iterations) {
+  if (!factor_) return;
+  const bool fresh = inverseSqrtScale_.size() == 0;
+  if (fresh) {
+    if (freshIterations_ < 0 || iterations < freshIterations_) freshIterations_ = iterations;
+  } else if (freshIterations_ >= 0 &&
+             iterations > kDriftFactor * freshIterations_ + kDriftSlack) {
+    drifted_ = true;
+  }
 }
 
 }  // namespace sculpt

@@ -1,34 +1,90 @@
 #pragma once
 // Cholesky factor of S = a M~ + b D~ + c K~lin on the free coordinates, the preconditioner of
-// the implicit and static solves. Refactored when a, b, c or the set of free coordinates
-// change, and (at most every few solves) after material edits.
+// the implicit and static solves (docs/fem.md, "The implicit solver's preconditioner").
+//  - Refactored when a, b, c or the set of free coordinates change. The ordering and symbolic
+//    analysis are kept while the pattern stays (sparse_cholesky.h).
+//  - Material edits (painting, many per second) never refactor on the spot: the factor is
+//    rescaled, P = D^1/2 S0 D^1/2 with D the ratio of the current diagonal of S to the factored
+//    one, which is exact for a uniform change of the materials and close for a local one.
+//  - Synchronous refresh (the default, deterministic: same inputs, same bits) refactors after
+//    material edits only once the rescaled factor costs CG noticeably more iterations than a
+//    fresh one did. Background refresh (the window) refactors on a worker thread after material
+//    and pin edits while the old factor keeps serving, and swaps at the first solve after it is
+//    ready.
 
-#include <Eigen/SparseCholesky>
+#include <cstdint>
+#include <future>
+#include <memory>
 #include <vector>
 
 #include "fem/fem_model.h"
+#include "sim/sparse_cholesky.h"
 
 namespace sculpt {
 
+struct PreconditionerStats {
+  int factorizations = 0;      ///< numeric factorisations
+  int backgroundFactorizations = 0;  ///< of these, made on the worker thread
+  int rescalings = 0;          ///< material edits absorbed by rescaling the factor
+  double lastFactorMs = 0;     ///< wall time of the last factorisation, assembly included
+  long long factorNonZeros = 0;
+};
+
+enum class PreconditionerRefresh { Synchronous, Background };
+
 class SystemPreconditioner {
  public:
-  /// Makes the factor current. Returns false when S cannot be factored even with a small
-  /// diagonal shift (then apply() is the identity).
+  explicit SystemPreconditioner(PreconditionerRefresh refresh = PreconditionerRefresh::Synchronous,
+                                SparseCholesky::Method method = SparseCholesky::defaultMethod());
+  ~SystemPreconditioner();
+  SystemPreconditioner(const SystemPreconditioner&) = delete;
+  SystemPreconditioner& operator=(const SystemPreconditioner&) = delete;
+
+  void setRefresh(PreconditionerRefresh refresh) { refresh_ = refresh; }
+  /// Makes the preconditioner usable for S at the current materials. Returns false when S
+  /// cannot be factored even with a small diagonal shift (then apply() is the identity).
   bool update(const FemModel& model, double massScale, double dampingScale, double stiffnessScale,
               const std::vector<int>& freeDofs);
-  /// z = S^-1 r on the free coordinates.
+  /// z ~ S^-1 r on the free coordinates given to the last update().
   void apply(const Eigen::VectorXd& r, Eigen::VectorXd& z) const;
+  /// The CG iterations the solve after the last update() took: the measure of the rescaled
+  /// factor's drift.
+  void reportIterations(int iterations);
+  const PreconditionerStats& stats() const { return stats_; }
+
+  /// One factor and what it was made for, and what making one needs (copied from the model).
+  struct Factor;
+  struct Request;
 
  private:
-  Eigen::SimplicialLLT<SparseMatrix> factor_;
-  bool valid_ = false;
-  double scales_[3] = {-1, -1, -1};
-  uint64_t materialVersion_ = ~uint64_t(0);
+  std::unique_ptr<Factor> makeFactor(const FemModel& model, double a, double b, double c,
+                                     const std::vector<int>& freeDofs) const;
+  void adopt(std::unique_ptr<Factor> factor);
+  void rescale(const FemModel& model, const std::vector<int>& freeDofs);
+  void startBackground(const FemModel& model, double a, double b, double c,
+                       const std::vector<int>& freeDofs);
+  bool collectBackground(bool wait);
+
+  PreconditionerRefresh refresh_;
+  SparseCholesky::Method method_;
+  std::unique_ptr<Factor> factor_;
+  // Applying the factor to the current free coordinates: position in the factor's numbering
+  // (-1: not in it, served by the diagonal), and D^-1/2 (empty: no rescaling).
+  std::vector<int> toFactor_;
+  Eigen::VectorXd inverseSqrtScale_, currentDiagonal_;
   std::vector<int> freeDofs_;
-  SparseMatrix stiffness_;  // K~lin, rebuilt with the materials
-  uint64_t stiffnessVersion_ = ~uint64_t(0);
-  int solvesSinceRefresh_ = 0;
-  static constexpr int kMaterialRefreshInterval = 8;
+  uint64_t appliedMaterialVersion_ = ~uint64_t(0);
+  bool mapped_ = false;  // the free set differs from the factor's
+  // Drift: the fewest iterations a solve took since the last factorisation.
+  int freshIterations_ = -1;
+  bool drifted_ = false;
+  std::future<std::unique_ptr<Factor>> pending_;
+  int solvesSinceStart_ = 0;
+  PreconditionerStats stats_;
+  static constexpr double kDriftFactor = 1.5;
+  static constexpr int kDriftSlack = 4;
+  // The deterministic mode adopts a factor started in the background this many solves later.
+  static constexpr int kDeterministicDelay = 8;
 };
 
 }  // namespace sculpt

@@ -1,0 +1,80 @@
+#include "sim/sparse_cholesky.h"
+
+#include <Eigen/CholmodSupport>
+#include <Eigen/SparseCholesky>
+#include <cstdlib>
+#include <cstring>
+#include <vector>
+
+namespace sculpt {
+
+using SparseMatrix = Eigen::SparseMatrix<double>;
+
+struct SparseCholesky::Impl {
+  Eigen::CholmodSupernodalLLT<SparseMatrix, Eigen::Lower> supernodal;
+  Eigen::SimplicialLLT<SparseMatrix, Eigen::Lower> simplicial;
+  // The pattern the analysis belongs to (empty: none yet).
+  std::vector<int> outer, inner;
+  Eigen::Index rows = -1;
+
+  bool samePattern(const SparseMatrix& S) const {
+    if (S.rows() != rows || outer.size() != size_t(S.outerSize() + 1) ||
+        inner.size() != size_t(S.nonZeros()))
+      return false;
+    return std::equal(outer.begin(), outer.end(), S.outerIndexPtr()) &&
+           std::equal(inner.begin(), inner.end(), S.innerIndexPtr());
+  }
+  void keepPattern(const SparseMatrix& S) {
+    rows = S.rows();
+    outer.assign(S.outerIndexPtr(), S.outerIndexPtr() + S.outerSize() + 1);
+    inner.assign(S.innerIndexPtr(), S.innerIndexPtr() + S.nonZeros());
+  }
+};
+
+SparseCholesky::Method SparseCholesky::defaultMethod() {
+  const char* text = std::getenv("SCULPT_CHOLESKY");
+  return text && std::strcmp(text, "simplicial") == 0 ? Method::Simplicial : Method::Supernodal;
+}
+
+SparseCholesky::SparseCholesky(Method method) : method_(method), impl_(std::make_unique<Impl>()) {}
+SparseCholesky::~SparseCholesky() = default;
+SparseCholesky::SparseCholesky(SparseCholesky&&) noexcept = default;
+SparseCholesky& SparseCholesky::operator=(SparseCholesky&&) noexcept = default;
+
+bool SparseCholesky::factor(const SparseMatrix& S) {
+  valid_ = false;
+  size_ = S.rows();
+  if (!S.isCompressed()) {
+    SparseMatrix compressed = S;
+    compressed.makeCompressed();
+    return factor(compressed);
+  }
+  const bool analysed = impl_->samePattern(S);
+  if (method_ == Method::Supernodal) {
+    auto& llt = impl_->supernodal;
+    if (!analysed) llt.analyzePattern(S);
+    llt.factorize(S);
+    valid_ = llt.info() == Eigen::Success;
+  } else {
+    auto& llt = impl_->simplicial;
+    if (!analysed) llt.analyzePattern(S);
+    llt.factorize(S);
+    valid_ = llt.info() == Eigen::Success;
+  }
+  if (!analysed) impl_->keepPattern(S);
+  return valid_;
+}
+
+void SparseCholesky::solve(const Eigen::VectorXd& r, Eigen::VectorXd& z) const {
+  if (method_ == Method::Supernodal) z = impl_->supernodal.solve(r);
+  else z = impl_->simplicial.solve(r);
+}
+
+long long SparseCholesky::factorNonZeros() const {
+  if (!valid_) return 0;
+  if (method_ == Method::Supernodal)
+    return static_cast<long long>(const_cast<Impl&>(*impl_).supernodal.cholmod().lnz);
+  return impl_->simplicial.matrixL().nestedExpression().nonZeros();
+}
+
+}  // namespace sculpt
