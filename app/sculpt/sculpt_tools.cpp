@@ -535,8 +535,13 @@ void SculptApp::drawToolOverlay(const ViewRect& view) {
   for (const ToolSpring& spring : frame.springs) {
     if (!std::isfinite(spring.force)) continue;
     const Eigen::Vector3d& target = spring.target;
-    char text[32];
-    std::snprintf(text, sizeof text, "%.3g N", spring.force);
+    char text[48];
+    // In units of the solid's weight too: "3.7e6 N" says little about a 1,600 t bunny.
+    if (frame.weight > 0)
+      std::snprintf(text, sizeof text, "%.3g N (%.2gx weight)", spring.force,
+                    spring.force / frame.weight);
+    else
+      std::snprintf(text, sizeof text, "%.3g N", spring.force);
     const ImVec2 at = screen(glm::vec3(target.x(), target.y(), target.z()));
     draw->AddText(ImVec2(at.x + 8, at.y - 8), colour(255, 120, 100), text);
   }

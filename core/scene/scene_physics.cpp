@@ -325,6 +325,7 @@ void ScenePhysics::fillFrame(SceneFrame& frame) const {
   std::vector<std::pair<uint64_t, ToolSpring>> springs;
   strokeSprings(springs);
   for (const auto& spring : springs) frame.springs.push_back(spring.second);
+  frame.weight = frame.springs.empty() ? 0.0 : 9.81 * model_->totalMass();
 }
 
 }  // namespace sculpt

@@ -44,6 +44,9 @@ struct SceneFrame {
   bool physicsReady = false;   ///< false: the rest shape while phase 2 runs
   /// Springs of the strokes acting now (tools/tool.h; a curve's are not labelled: force NaN).
   std::vector<ToolSpring> springs;
+  /// The solid's weight, total mass x 9.81 m/s^2 (N), while `springs` is not empty: pull
+  /// forces are labelled in units of it.
+  double weight = 0.0;
 };
 
 /// The rest frame of a geometry before its physics exists: rest nodes, identity gradients, rest

@@ -129,7 +129,9 @@ class Simulator {
   Points prepareAndGradient(const Points& x, bool withInertia);
   // Solves H dx = -gradient on the free coordinates by preconditioned CG (H at the prepared
   // state, the preconditioner already current).
-  CgResult newtonStep(const Points& gradient, bool withInertia, double tolerance, Points& dx);
+  // `warmStart` (rows() == 0: none) is CG's first iterate.
+  CgResult newtonStep(const Points& gradient, bool withInertia, double tolerance, Points& dx,
+                      const Points& warmStart = Points());
   Points hessianProduct(const Points& dx, bool withInertia);
   void zeroFixed(Points& x) const;
   double systemLoadEnergy(const Points& x);
@@ -158,6 +160,9 @@ class Simulator {
   Points position_, velocity_, previous_;  // previous_: p(t - dt) of the paper's scheme
   double previousStep_ = 0;                // the dt that previous_ belongs to (0: none)
   Points lastIncrement_;                   // warm start of the CG solves
+  Points lastImplicitStep_;                // warm start of the implicit step's solve (h below)
+  double lastImplicitH_ = 0;
+  uint64_t freeDofsVersionOfStep_ = 0;
   double time_ = 0;
   std::vector<uint8_t> fixed_;
   std::vector<int> freeDofs_;  // indices 3i + c of free coordinates

@@ -19,7 +19,7 @@ double typicalCellSize(const FemModel& model) {
 double defaultPullStiffness(const FemModel& model) {
   double youngs = model.setup().material.youngs;
   for (const Material& m : model.mesh().gaussMaterial) youngs = std::max(youngs, m.youngs);
-  return 10.0 * youngs * typicalCellSize(model);
+  return kPullStiffnessPerCell * youngs * typicalCellSize(model);
 }
 
 double toolStiffness(const FemModel& model, double stiffness, const char* tool) {

@@ -54,11 +54,13 @@ TEST(PhysicalTools, PullMovesThePointTowardTheTargetAndReleasesCleanly) {
   ASSERT_TRUE(pull && pull->active());
   const Eigen::Vector3d held = pointAt(*s.model, s.simulator->positions(), point);
   const double pulled = (held - target).norm();
-  EXPECT_LT(pulled, 0.4 * unpulled) << "anchor " << anchor.transpose();
+  // A spring about as stiff as the solid: the point goes part of the way, not all of it.
+  EXPECT_LT(pulled, 0.8 * unpulled) << "anchor " << anchor.transpose();
+  EXPECT_GT(pulled, 0.1 * unpulled) << "anchor " << anchor.transpose();
   EXPECT_EQ(pull->target(), target);
-  // The force line: k |x - target| with the default stiffness 10 E h.
+  // The force line: k |x - target| with the default stiffness 1.5 E h.
   EXPECT_NEAR(pull->springForce(), defaultPullStiffness(*s.model) * pulled, 1e-9 * pull->springForce());
-  EXPECT_NEAR(defaultPullStiffness(*s.model), 10 * 1e5 * 0.5, 0.05 * 10 * 1e5 * 0.5);
+  EXPECT_NEAR(defaultPullStiffness(*s.model), 1.5 * 1e5 * 0.5, 0.05 * 1.5 * 1e5 * 0.5);
   EXPECT_GT(s.simulator->loadEnergy(), 0.0);
 
   play(player, 1.02);  // released before the step at t = 1
