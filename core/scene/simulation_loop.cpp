@@ -37,11 +37,6 @@ void SimulationLoop::showFrame(SceneFrame frame) {
 }
 
 void SimulationLoop::install(std::unique_ptr<ScenePhysics> physics, SceneFrame first) {
-  // An interactive run: after paint and pin edits the preconditioner is refactored on a worker
-  // thread while the old factor keeps serving (not bit-reproducible, never a stalled step).
-  SimulationSettings settings = physics->simulator().settings();
-  settings.preconditionerRefresh = PreconditionerRefresh::Background;
-  physics->simulator().setSettings(settings);
   std::unique_ptr<ScenePhysics> replaced;  // a scene never run is freed after the lock
   {
     const std::lock_guard lock(mutex_);

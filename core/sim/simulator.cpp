@@ -43,7 +43,7 @@ Simulator::Simulator(FemModel& model, SimulationSettings settings)
     : model_(model),
       settings_(validated(settings)),
       elastic_(std::make_unique<ElasticForm>(model, settings.corotated)),
-      preconditioner_(std::make_unique<SystemPreconditioner>(settings.preconditionerRefresh)) {
+      preconditioner_(std::make_unique<SystemPreconditioner>()) {
   model.elastic().setModel(settings_.elasticModel);
   const Eigen::Index n = model.numControlPoints();
   position_ = model.restControl();
@@ -86,7 +86,6 @@ std::string Simulator::setSettings(const SimulationSettings& s) {
   if (s.corotated != settings_.corotated)
     elastic_ = std::make_unique<ElasticForm>(model_, s.corotated);
   if (s.elasticModel != model_.elastic().model()) model_.elastic().setModel(s.elasticModel);
-  preconditioner_->setRefresh(s.preconditionerRefresh);
   settings_ = s;
   return {};
 }

@@ -42,9 +42,6 @@ struct SimulationSettings {
   double implicitTolerance = 1e-6;  ///< relative CG residual of the implicit and static solves
   int maxIterations = 2000;         ///< CG iterations per solve
   int maxHalvings = 10;             ///< a failing step is retried with up to 2^this sub-steps
-  /// Synchronous: deterministic (same inputs, same bits). Background (the window): new
-  /// factors after edits are adopted as soon as the worker thread has them.
-  PreconditionerRefresh preconditionerRefresh = PreconditionerRefresh::Synchronous;
 };
 
 struct StepReport {

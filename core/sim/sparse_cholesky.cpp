@@ -2,8 +2,11 @@
 
 #include <Eigen/CholmodSupport>
 #include <Eigen/SparseCholesky>
+#include <dlfcn.h>
+
 #include <cstdlib>
 #include <cstring>
+#include <mutex>
 #include <vector>
 
 namespace sculpt {
@@ -31,12 +34,30 @@ struct SparseCholesky::Impl {
   }
 };
 
+namespace {
+
+// OpenBLAS (the usual libblas.so.3 on Debian) starts one thread per core, and they spin between
+// calls: the haptic servo and the simulation's own workers lost their cores to them (the stylus
+// window test's force faded between probes). The blocks factored here are small; one thread.
+void useOneBlasThread() {
+  static std::once_flag once;
+  std::call_once(once, [] {
+    using SetThreads = void (*)(int);
+    if (auto set = reinterpret_cast<SetThreads>(dlsym(RTLD_DEFAULT, "openblas_set_num_threads")))
+      set(1);
+  });
+}
+
+}  // namespace
+
 SparseCholesky::Method SparseCholesky::defaultMethod() {
   const char* text = std::getenv("SCULPT_CHOLESKY");
   return text && std::strcmp(text, "simplicial") == 0 ? Method::Simplicial : Method::Supernodal;
 }
 
-SparseCholesky::SparseCholesky(Method method) : method_(method), impl_(std::make_unique<Impl>()) {}
+SparseCholesky::SparseCholesky(Method method) : method_(method), impl_(std::make_unique<Impl>()) {
+  useOneBlasThread();
+}
 SparseCholesky::~SparseCholesky() = default;
 SparseCholesky::SparseCholesky(SparseCholesky&&) noexcept = default;
 SparseCholesky& SparseCholesky::operator=(SparseCholesky&&) noexcept = default;

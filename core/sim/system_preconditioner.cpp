@@ -34,9 +34,7 @@ namespace {
 using Clock = std::chrono::steady_clock;
 }  // namespace
 
-SystemPreconditioner::SystemPreconditioner(PreconditionerRefresh refresh,
-                                           SparseCholesky::Method method)
-    : refresh_(refresh), method_(method) {}
+SystemPreconditioner::SystemPreconditioner(SparseCholesky::Method method) : method_(method) {}
 
 SystemPreconditioner::~SystemPreconditioner() {
   if (pending_.valid()) pending_.wait();
@@ -135,28 +133,20 @@ void SystemPreconditioner::startBackground(const FemModel& model, double a, doub
                         [request, method] { return factorRequest(*request, method); });
 }
 
-bool SystemPreconditioner::collectBackground(bool wait) {
-  if (!pending_.valid()) return false;
-  if (!wait && pending_.wait_for(std::chrono::seconds(0)) != std::future_status::ready)
-    return false;
+void SystemPreconditioner::adoptBackground() {
   std::unique_ptr<Factor> factor = pending_.get();
   // A factor made for another time step is of no use (sub-steps refactor on the spot).
-  if (factor_ && !std::equal(factor->scales, factor->scales + 3, factor_->scales)) return false;
+  if (factor_ && !std::equal(factor->scales, factor->scales + 3, factor_->scales)) return;
   adopt(std::move(factor));
   ++stats_.backgroundFactorizations;
-  return true;
 }
 
 bool SystemPreconditioner::update(const FemModel& model, double massScale, double dampingScale,
                                   double stiffnessScale, const std::vector<int>& freeDofs) {
   const double scales[3] = {massScale, dampingScale, stiffnessScale};
-  // A finished background factor is taken at once in the window; the deterministic mode
-  // takes it a fixed number of solves after it was started, waiting if it is late.
-  if (pending_.valid()) {
-    ++solvesSinceStart_;
-    if (refresh_ == PreconditionerRefresh::Background) collectBackground(false);
-    else if (solvesSinceStart_ >= kDeterministicDelay) collectBackground(true);
-  }
+  // A factor from the worker is taken a fixed number of solves after it was started (waiting
+  // if it is late), not when it happens to be ready: the results must not depend on timing.
+  if (pending_.valid() && ++solvesSinceStart_ >= kDeterministicDelay) adoptBackground();
   if (!factor_ || !std::equal(scales, scales + 3, factor_->scales)) {
     if (pending_.valid()) pending_.wait();
     pending_ = {};

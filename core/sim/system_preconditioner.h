@@ -6,11 +6,10 @@
 //  - Material edits (painting, many per second) never refactor on the spot: the factor is
 //    rescaled, P = D^1/2 S0 D^1/2 with D the ratio of the current diagonal of S to the factored
 //    one, which is exact for a uniform change of the materials and close for a local one.
-//  - Synchronous refresh (the default, deterministic: same inputs, same bits) refactors after
-//    material edits only once the rescaled factor costs CG noticeably more iterations than a
-//    fresh one did. Background refresh (the window) refactors on a worker thread after material
-//    and pin edits while the old factor keeps serving, and swaps at the first solve after it is
-//    ready.
+//  - After a pin edit, or once the rescaled factor costs CG noticeably more iterations than a
+//    fresh one did, a new factor is made on a worker thread while the old one keeps serving, and
+//    adopted a fixed number of solves later (waiting if it is late): same inputs, same bits, in
+//    the window as in the CLI.
 
 #include <cstdint>
 #include <future>
@@ -30,17 +29,13 @@ struct PreconditionerStats {
   long long factorNonZeros = 0;
 };
 
-enum class PreconditionerRefresh { Synchronous, Background };
-
 class SystemPreconditioner {
  public:
-  explicit SystemPreconditioner(PreconditionerRefresh refresh = PreconditionerRefresh::Synchronous,
-                                SparseCholesky::Method method = SparseCholesky::defaultMethod());
+  explicit SystemPreconditioner(SparseCholesky::Method method = SparseCholesky::defaultMethod());
   ~SystemPreconditioner();
   SystemPreconditioner(const SystemPreconditioner&) = delete;
   SystemPreconditioner& operator=(const SystemPreconditioner&) = delete;
 
-  void setRefresh(PreconditionerRefresh refresh) { refresh_ = refresh; }
   /// Makes the preconditioner usable for S at the current materials. Returns false when S
   /// cannot be factored even with a small diagonal shift (then apply() is the identity).
   bool update(const FemModel& model, double massScale, double dampingScale, double stiffnessScale,
@@ -63,9 +58,8 @@ class SystemPreconditioner {
   void rescale(const FemModel& model, const std::vector<int>& freeDofs);
   void startBackground(const FemModel& model, double a, double b, double c,
                        const std::vector<int>& freeDofs);
-  bool collectBackground(bool wait);
+  void adoptBackground();
 
-  PreconditionerRefresh refresh_;
   SparseCholesky::Method method_;
   std::unique_ptr<Factor> factor_;
   // Applying the factor to the current free coordinates: position in the factor's numbering
@@ -83,7 +77,7 @@ class SystemPreconditioner {
   PreconditionerStats stats_;
   static constexpr double kDriftFactor = 1.5;
   static constexpr int kDriftSlack = 4;
-  // The deterministic mode adopts a factor started in the background this many solves later.
+  // A factor started on the worker is adopted this many solves later.
   static constexpr int kDeterministicDelay = 8;
 };
 

@@ -172,8 +172,12 @@ TEST_F(FemCliTest, StaticConvergesAtEveryLoadFromANanoNewtonToAKiloNewton) {
   const CliResult big = run("static " + quote(kAssets + "beam.json") + " --trilinear " + kBeamRoot +
                             " --force " + kBeamTip + " 0,-1e3,0 " + stiffness + " --out " +
                             quote(path("big.vtk")));
-  EXPECT_NE(big.err.find("load steps"), std::string::npos) << big.err;
-  EXPECT_LE(number(keyValues(big.lastLine()).at(2).second), 1e-9) << big.lastLine();
+  // Load steps to 1e-9 of the load, or (depending on the factorisation's last bits) the rounding
+  // floor of the elastic forces, which sits at about that level here (docs/fem.md).
+  EXPECT_TRUE(big.err.find("load steps") != std::string::npos ||
+              big.err.find("rounding of the elastic forces") != std::string::npos)
+      << big.err;
+  EXPECT_LE(number(keyValues(big.lastLine()).at(2).second), 2e-9) << big.lastLine();
 }
 
 TEST_F(FemCliTest, StaticSaysWhenTheLoadCannotMoveTheSolid) {
@@ -398,7 +402,10 @@ TEST_F(FemCliTest, BenchFemPrintsKeyValueLastLine) {
   ASSERT_EQ(result.exitCode, 0) << result.err;
   const KeyValues pairs = keyValues(result.lastLine());
   ASSERT_EQ(keys(pairs), (std::vector<std::string>{"fem_step_ms", "elements", "tricubic",
-                                                   "trilinear", "pyramid", "cg_iterations"}))
+                                                   "trilinear", "pyramid", "cg_iterations",
+                                                   "elastic_pass_ms", "step_passes",
+                                                   "first_step_ms", "step_p99_ms",
+                                                   "step_max_ms"}))
       << result.lastLine();
   EXPECT_TRUE(isMilliseconds(pairs[0].second)) << result.lastLine();
   const auto v = numbers(pairs);

@@ -40,10 +40,8 @@ TEST(SystemPreconditioner, SupernodalAndSimplicialFactorsSolveAlike) {
   auto model = test::buildModel(test::block3(), 1, false);
   ASSERT_TRUE(model);
   const std::vector<int> dofs = allDofs(*model, 16);  // a few points pinned: definite
-  SystemPreconditioner supernodal(PreconditionerRefresh::Synchronous,
-                                  SparseCholesky::Method::Supernodal);
-  SystemPreconditioner simplicial(PreconditionerRefresh::Synchronous,
-                                  SparseCholesky::Method::Simplicial);
+  SystemPreconditioner supernodal(SparseCholesky::Method::Supernodal);
+  SystemPreconditioner simplicial(SparseCholesky::Method::Simplicial);
   ASSERT_TRUE(supernodal.update(*model, 3600, 0, 1, dofs));
   ASSERT_TRUE(simplicial.update(*model, 3600, 0, 1, dofs));
   const Eigen::VectorXd r = randomVector(Eigen::Index(dofs.size()), 1);
@@ -116,7 +114,7 @@ TEST(SystemPreconditioner, PinEditsAreServedByTheOldFactorUntilTheNewOneIsAdopte
   EXPECT_EQ(simulator.preconditionerStats().backgroundFactorizations, 1);
 }
 
-TEST(SystemPreconditioner, SynchronousModeGivesTheSameBitsTwice) {
+TEST(SystemPreconditioner, PaintAndPinEditsGiveTheSameBitsTwice) {
   auto run = [] {
     auto model = test::buildModel(test::block3(), 1, false);
     Simulator simulator(*model);

@@ -1,0 +1,338 @@
+#include "cli/bench_fem.h"
+
+#include <algorithm>
+#include <cmath>
+#include <cstdio>
+#include <iostream>
+#include <limits>
+#include <memory>
+#include <numeric>
+#include <optional>
+#include <string>
+#include <vector>
+
+#include "cli/bench_timing.h"
+#include "cli/cli_common.h"
+#include "cli/fem_options.h"
+#include "cli/scene_options.h"
+#include "scene/scene_physics.h"
+#include "sim/standard_forms.h"
+#include "tools/strokes.h"
+#include "tools/tool.h"
+#include "util/parallel_for.h"
+
+namespace sculpt::cli {
+
+const std::vector<OptionSpec> kFemBenchOptions = {
+    {"integrator", true}, {"model", true},       {"steps", true},
+    {"dt", true},         {"paint-every", true}, {"cage", true}};
+
+namespace {
+
+using Clock = BenchClock;
+
+constexpr int kElasticPasses = 10;
+constexpr double kStiffer = 10.0, kSofter = 0.1;
+
+std::string ms(double value) {
+  char text[32];
+  std::snprintf(text, sizeof text, "%.3f", value);
+  return text;
+}
+
+// The nearest-rank percentile: the smallest sample with at least p% of them at or below it.
+double percentile(std::vector<double> samples, double p) {
+  std::sort(samples.begin(), samples.end());
+  const double rank = std::ceil(p / 100.0 * double(samples.size()));
+  const size_t index = static_cast<size_t>(std::clamp(rank, 1.0, double(samples.size()))) - 1;
+  return samples[index];
+}
+
+// The mean of each control cell's distinct rest vertices: a point inside the solid, even where
+// the solid is not convex.
+std::vector<Eigen::Vector3d> controlCellCentres(const FemModel& model) {
+  const CellComplex& control = model.control();
+  std::vector<Eigen::Vector3d> centres;
+  std::vector<uint32_t> vertices;
+  for (uint32_t c = 0; c < control.numCells(); ++c) {
+    vertices.clear();
+    for (uint32_t j = 0; j < control.numFacesOfCell(c); ++j)
+      for (const uint32_t v : control.cellFace(c, j)) vertices.push_back(v);
+    std::sort(vertices.begin(), vertices.end());
+    vertices.erase(std::unique(vertices.begin(), vertices.end()), vertices.end());
+    Eigen::Vector3d sum = Eigen::Vector3d::Zero();
+    for (const uint32_t v : vertices) sum += control.positions.row(v).transpose();
+    centres.push_back(sum / double(std::max<size_t>(vertices.size(), 1)));
+  }
+  return centres;
+}
+
+// A stride near the golden section of n, coprime with n: k * stride mod n visits every cell
+// once per n dabs and jumps across the solid between dabs.
+uint32_t cellStride(uint32_t n) {
+  if (n <= 2) return 1;
+  uint32_t stride = std::max<uint32_t>(1, static_cast<uint32_t>(0.618034 * n));
+  while (std::gcd(stride, n) != 1) --stride;
+  return stride;
+}
+
+// Stiffness dabs through the paint tool's stroke (the session script's paint events use the
+// same), on a context over the bare simulator.
+class DabPainter {
+ public:
+  explicit DabPainter(Simulator& simulator)
+      : context_(simulator),
+        centres_(controlCellCentres(simulator.model())),
+        stride_(cellStride(static_cast<uint32_t>(centres_.size()))),
+        radius_(controlCellSize(simulator.model())),
+        base_(simulator.model().setup().material) {}
+
+  double radius() const { return radius_; }
+  long samplesPainted() const { return painted_; }
+
+  void paintNext() {
+    PaintStroke::Settings settings;
+    settings.brush.radius = radius_;
+    settings.brush.target = base_;
+    settings.brush.target.youngs = base_.youngs * (dabs_ % 2 == 0 ? kStiffer : kSofter);
+    settings.brush.fields = FemModel::MaterialFields{false, false, true, false};
+    const size_t cell = (dabs_ * stride_ + centres_.size() / 2) % centres_.size();
+    ToolInput input;
+    input.restPoint = centres_[cell];
+    PaintStroke stroke(settings);
+    stroke.begin(context_, input);
+    stroke.end(context_, input);
+    painted_ += stroke.samplesPainted();
+    ++dabs_;
+  }
+
+ private:
+  SimulatorToolContext context_;
+  std::vector<Eigen::Vector3d> centres_;
+  size_t stride_;
+  double radius_;
+  Material base_;
+  size_t dabs_ = 0;
+  long painted_ = 0;
+};
+
+// Median time of one elastic force evaluation at the current positions, after one untimed call.
+double elasticPassMs(Simulator& simulator) {
+  FemModel& model = simulator.model();
+  ElasticForm elastic(model, simulator.settings().corotated);
+  const Points& control = simulator.positions();
+  Points nodes;
+  model.nodesFromControl(control, nodes);
+  const FormState state{control, nodes};
+  FormGradient gradient;
+  std::vector<double> samples;
+  for (int i = 0; i <= kElasticPasses; ++i) {
+    gradient.setZero(control.rows(), nodes.rows());
+    const Clock::time_point start = Clock::now();
+    elastic.prepareAndAddGradient(state, gradient);
+    if (i > 0) samples.push_back(millisecondsSince(start));
+  }
+  return median(std::move(samples));
+}
+
+// Fixes the control points whose rest y is the least (the bottom layer); returns how many.
+uint32_t fixLowestLayer(Simulator& simulator) {
+  const Points& rest = simulator.model().restControl();
+  const double low = rest.col(1).minCoeff();
+  const double extent = (rest.colwise().maxCoeff() - rest.colwise().minCoeff()).maxCoeff();
+  const double tolerance = 1e-9 * std::max(extent, 1.0);
+  const double inf = std::numeric_limits<double>::infinity();
+  return simulator.fixInBox(Eigen::AlignedBox3d(Eigen::Vector3d(-inf, low - tolerance, -inf),
+                                                Eigen::Vector3d(inf, low + tolerance, inf)));
+}
+
+uint32_t fixedCount(const Simulator& simulator) {
+  const std::vector<uint8_t>& mask = simulator.fixedMask();
+  return static_cast<uint32_t>(std::count(mask.begin(), mask.end(), uint8_t{1}));
+}
+
+struct BenchRun {
+  int steps = 0;
+  int paintEvery = 0;
+  std::string levels;
+  double setupMs = 0;
+};
+
+// The settings and setup lines, the stepping, and the figures; the exit code.
+int benchAndPrint(Simulator& simulator, const BenchRun& run, std::optional<double> firstStepMs) {
+  const FemModel& model = simulator.model();
+  const SimulationSettings& settings = simulator.settings();
+  std::cout << "threads=" << workerCount() << " levels=" << run.levels
+            << " integrator=" << integratorName(settings.integrator) << " dt=" << settings.timeStep
+            << " steps=" << run.steps << " warmup=" << FemBenchOptions{}.warmupSteps
+            << " paint_every=" << run.paintEvery << '\n'
+            << "setup_ms=" << ms(run.setupMs) << " control_points=" << model.numControlPoints()
+            << " nodes=" << model.numNodes() << " fixed=" << fixedCount(simulator) << '\n';
+  std::cout.flush();
+
+  FemBenchOptions options;
+  options.steps = run.steps;
+  options.paintEvery = run.paintEvery;
+  options.firstStepMs = firstStepMs;
+  const FemBenchFigures f = runFemBench(simulator, options, std::cerr);
+
+  if (run.paintEvery > 0)
+    std::cout << "dabs=" << f.dabs << " warmup_dabs=" << f.warmupDabs
+              << " dab_radius=" << f.dabRadius << " painted_samples=" << f.paintedSamples << '\n';
+  const ElementCounts counts = model.mesh().counts();
+  char mean[32], passes[32];
+  std::snprintf(mean, sizeof mean, "%.1f", f.meanCgIterations);
+  std::snprintf(passes, sizeof passes, "%.2f", f.stepPasses);
+  std::cout << "fem_step_ms=" << ms(f.medianStepMs) << " elements=" << counts.total()
+            << " tricubic=" << counts.tricubic << " trilinear=" << counts.trilinear
+            << " pyramid=" << counts.pyramid << " cg_iterations=" << mean
+            << " elastic_pass_ms=" << ms(f.elasticPassMs) << " step_passes=" << passes
+            << " first_step_ms=" << ms(f.firstStepMs) << " step_p99_ms=" << ms(f.p99StepMs)
+            << " step_max_ms=" << ms(f.maxStepMs) << '\n';
+  return f.failed ? 1 : kExitSuccess;
+}
+
+// A control mesh: the FEM options' material and boxes, the lowest layer fixed without --fix,
+// gravity.
+int benchControlMesh(const CliArgs& args, const std::string& control, const BenchRun& given) {
+  if (!args.has("levels") && !args.has("trilinear"))
+    throw UsageError("--levels is required (or --trilinear)");
+  if (args.has("cage")) throw UsageError("--cage is for surfaces caged as a scene");
+  const FemCommandOptions options = parseFemOptions(args);
+  const SimulationSettings settings = parseIntegratorAndStep(args, false);
+
+  const std::optional<LoadedMesh> loaded = loadValidControlMesh(control);
+  if (!loaded) return kExitBadInput;
+  const CellComplex& mesh = loaded->mesh;
+  // buildFemModel below refuses a level that would not fit before it allocates.
+  std::cout << "file=" << control << " control_cells=" << mesh.numCells()
+            << " control_vertices=" << mesh.numVertices() << '\n';
+  std::cout.flush();
+
+  BenchRun run = given;
+  const Clock::time_point setupStart = Clock::now();
+  std::optional<FemModel> model = buildFemModel(mesh, options.setup, control);
+  if (!model) return kExitBadInput;
+  run.setupMs = millisecondsSince(setupStart);
+  run.levels =
+      options.setup.trilinear ? std::string("trilinear") : std::to_string(options.setup.level);
+
+  Simulator simulator(*model);
+  if (const std::string problem = simulator.setSettings(settings); !problem.empty())
+    throw UsageError(problem);
+  applyConstraintsAndForces(simulator, options);
+  if (options.fixed.empty()) fixLowestLayer(simulator);
+  simulator.addLoad(std::make_unique<GravityForm>(*model, Eigen::Vector3d(0.0, -9.81, 0.0)));
+  return benchAndPrint(simulator, run, std::nullopt);
+}
+
+// A surface, a project or the default scene, built as simulate builds it, with the scene's own
+// pins, loads and settings. Its build takes the first step, which is first_step_ms.
+int benchScene(const CliArgs& args, const std::string& file, const BenchRun& given) {
+  const CliScene scene = cliSceneFor(args, file, "bench fem");
+  BenchRun run = given;
+  run.levels = std::to_string(scene.settings.level);
+  const Clock::time_point setupStart = Clock::now();
+  const std::optional<SceneBuildPhase1> phase1 = buildSceneGeometry(scene.source, scene.settings, 1);
+  StageTimes times;
+  std::unique_ptr<ScenePhysics> physics =
+      phase1 ? ScenePhysics::build(phase1->geometry, phase1->solid, scene.settings, nullptr, &times)
+             : nullptr;
+  if (!physics) return printError(file + ": the scene build was cancelled");
+  const double buildMs = millisecondsSince(setupStart);
+  double firstStepMs = 0;
+  for (const auto& [stage, stageMs] : times)
+    if (stage == "first step") firstStepMs = stageMs;
+  run.setupMs = buildMs - firstStepMs;
+
+  const CellComplex& control = physics->model().control();
+  std::cout << "file=" << file << " control_cells=" << control.numCells()
+            << " control_vertices=" << control.numVertices() << '\n';
+  std::cerr << "bench fem: " << phase1->geometry->description << '\n';
+  return benchAndPrint(physics->simulator(), run, firstStepMs);
+}
+
+}  // namespace
+
+double controlCellSize(const FemModel& model) {
+  const FemMesh& mesh = model.mesh();
+  const double volume = std::accumulate(mesh.gaussVolume.begin(), mesh.gaussVolume.end(), 0.0);
+  return std::cbrt(volume / std::max<uint32_t>(model.control().numCells(), 1));
+}
+
+FemBenchFigures runFemBench(Simulator& simulator, const FemBenchOptions& options,
+                            std::ostream& err) {
+  FemBenchFigures figures;
+  auto step = [&] {
+    const StepReport report = simulator.step();
+    if (!report.ok || !report.message.empty()) {
+      if (figures.failures == 0) err << "bench fem: " << report.message << '\n';
+      ++figures.failures;
+    }
+    return report;
+  };
+  std::optional<DabPainter> painter;
+  if (options.paintEvery > 0) {
+    painter.emplace(simulator);
+    figures.dabRadius = painter->radius();
+  }
+  auto paintBefore = [&](int stepIndex, int& dabs) {
+    if (painter && stepIndex % options.paintEvery == 0) {
+      painter->paintNext();
+      ++dabs;
+    }
+  };
+
+  if (options.firstStepMs) {
+    figures.firstStepMs = *options.firstStepMs;
+  } else {
+    const Clock::time_point start = Clock::now();
+    step();
+    figures.firstStepMs = millisecondsSince(start);
+  }
+  for (int i = 0; i < options.warmupSteps; ++i) {
+    paintBefore(i, figures.warmupDabs);
+    step();
+  }
+  std::vector<double> samples;
+  long long iterations = 0;
+  for (int i = 0; i < options.steps; ++i) {
+    paintBefore(i, figures.dabs);  // outside the timing: the step pays for what the dab changed
+    const Clock::time_point start = Clock::now();
+    const StepReport report = step();
+    samples.push_back(millisecondsSince(start));
+    iterations += report.iterations;
+    figures.failed = figures.failed || !report.ok;
+  }
+  const int stepsTaken = options.warmupSteps + options.steps + (options.firstStepMs ? 0 : 1);
+  if (figures.failures > 1)
+    err << "bench fem: " << figures.failures << " of " << stepsTaken
+        << " steps needed sub-steps or failed\n";
+
+  if (!samples.empty()) {
+    figures.medianStepMs = median(samples);
+    figures.p99StepMs = percentile(samples, 99.0);
+    figures.maxStepMs = *std::max_element(samples.begin(), samples.end());
+    figures.meanCgIterations = static_cast<double>(iterations) / double(samples.size());
+  }
+  figures.elasticPassMs = elasticPassMs(simulator);
+  figures.stepPasses = figures.elasticPassMs > 0 ? figures.medianStepMs / figures.elasticPassMs
+                                                 : std::numeric_limits<double>::infinity();
+  if (painter) figures.paintedSamples = painter->samplesPainted();
+  return figures;
+}
+
+int benchFemCommand(const CliArgs& args, std::string& file) {
+  if (args.positional().size() != 2)
+    throw UsageError("bench fem needs exactly one CONTROL file or SCENE (see --help)");
+  if (args.has("repeat"))
+    throw UsageError("--repeat applies to bench subdivide only (use --steps)");
+  BenchRun run;
+  run.steps = args.intValue("steps", 100, 1, 1'000'000);
+  run.paintEvery = args.intValue("paint-every", 0, 1, 1'000'000);
+  file = args.positional()[1];
+  if (lowerExtension(file) == ".json") return benchControlMesh(args, file, run);
+  return benchScene(args, file, run);
+}
+
+}  // namespace sculpt::cli

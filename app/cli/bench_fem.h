@@ -1,0 +1,64 @@
+#pragma once
+// The FEM step benchmark (sculpt-cli bench fem): wall times of Simulator::step() on a simulator
+// the caller has set up (pins, loads, settings), of one elastic force evaluation, and optionally
+// stiffness dabs painted between steps, as the paint tool paints them.
+
+#include <iosfwd>
+#include <optional>
+#include <string>
+#include <vector>
+
+#include "cli/cli_args.h"
+#include "sim/simulator.h"
+
+namespace sculpt::cli {
+
+struct FemBenchOptions {
+  int steps = 100;       ///< measured steps
+  int warmupSteps = 3;   ///< untimed steps after the first one
+  int paintEvery = 0;    ///< a stiffness dab before every N-th warm-up and measured step; 0: none
+  /// The first step's time when the caller took that step already (a scene's build does);
+  /// none: the benchmark takes and times it.
+  std::optional<double> firstStepMs;
+};
+
+struct FemBenchFigures {
+  double firstStepMs = 0;    ///< the first step (the preconditioner's first factorisation)
+  double medianStepMs = 0;   ///< median of the measured steps
+  double p99StepMs = 0;      ///< their 99th percentile (nearest rank)
+  double maxStepMs = 0;      ///< the slowest of them
+  double elasticPassMs = 0;  ///< median of one ElasticForm::prepareAndAddGradient
+  double stepPasses = 0;     ///< medianStepMs / elasticPassMs: a step in elastic passes
+  double meanCgIterations = 0;  ///< per measured step
+  int failures = 0;             ///< steps (all of them) that needed sub-steps or failed
+  bool failed = false;          ///< a measured step failed
+  int dabs = 0;                 ///< dabs painted before measured steps
+  int warmupDabs = 0;           ///< dabs painted before warm-up steps
+  double dabRadius = 0;         ///< m (rest): one control cell, controlCellSize()
+  long paintedSamples = 0;      ///< Gauss samples touched by all dabs
+};
+
+/// Edge length of a typical control cell: cbrt(rest volume / #control cells) (m).
+double controlCellSize(const FemModel& model);
+
+/// Steps `simulator` and times it (see FemBenchOptions); a failing step's first message goes to
+/// `err`. Dab k (0, 1, ...) is centred on a control cell's centre, the cells visited in a fixed
+/// stride order, with Young's modulus 10x (even k) or 0.1x (odd k) the model's initial one.
+FemBenchFigures runFemBench(Simulator& simulator, const FemBenchOptions& options,
+                            std::ostream& err);
+inline FemBenchFigures runFemBench(Simulator& simulator, int steps, int paintEvery,
+                                   std::ostream& err) {
+  FemBenchOptions options;
+  options.steps = steps;
+  options.paintEvery = paintEvery;
+  return runFemBench(simulator, options, err);
+}
+
+/// The options bench fem takes besides the FEM options.
+extern const std::vector<OptionSpec> kFemBenchOptions;
+
+/// sculpt-cli bench fem CONTROL|SCENE ...: sets `file` for error messages; returns the exit code.
+/// Throws UsageError.
+int benchFemCommand(const CliArgs& args, std::string& file);
+
+}  // namespace sculpt::cli

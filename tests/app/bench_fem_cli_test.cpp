@@ -1,0 +1,147 @@
+// sculpt-cli bench fem end to end: the step figures of the last line (first step, median, 99th
+// percentile, maximum, the elastic pass and the step in elastic passes), stiffness dabs painted
+// with --paint-every, a scene instead of a control mesh, and bad options as usage errors.
+
+#include <gtest/gtest.h>
+
+#include <cmath>
+#include <cstdlib>
+#include <map>
+#include <sstream>
+#include <string>
+#include <vector>
+
+#include "support/cli_fixture.h"
+
+namespace sculpt::test {
+namespace {
+
+const std::string kAssets = SCULPT_SOURCE_DIR "/assets/";
+const std::string kBlock = quote(kAssets + "block3.json") + " --levels 1";
+
+std::vector<std::string> keysOf(const KeyValues& pairs) {
+  std::vector<std::string> keys;
+  for (const auto& [key, value] : pairs) keys.push_back(key);
+  return keys;
+}
+
+// Every value as a number; a value that is not one wholly fails the test.
+std::map<std::string, double> numbersOf(const KeyValues& pairs) {
+  std::map<std::string, double> values;
+  for (const auto& [key, text] : pairs) {
+    char* end = nullptr;
+    const double value = std::strtod(text.c_str(), &end);
+    EXPECT_TRUE(!text.empty() && end == text.c_str() + text.size() && std::isfinite(value))
+        << key << "='" << text << "'";
+    values[key] = value;
+  }
+  return values;
+}
+
+// The line of stdout that starts with `key=`; empty when none.
+std::string lineStartingWith(const std::string& out, const std::string& key) {
+  std::istringstream in(out);
+  for (std::string line; std::getline(in, line);)
+    if (line.rfind(key + "=", 0) == 0) return line;
+  return {};
+}
+
+class BenchFemCliTest : public CliFixture {
+ protected:
+  BenchFemCliTest() : CliFixture("sculpt_bench_fem_cli_test_") {}
+
+  // Runs the benchmark, checks the last line's keys and figures, and returns its numbers.
+  std::map<std::string, double> bench(const std::string& args, CliResult* resultOut = nullptr) {
+    const CliResult result = run("bench fem " + args);
+    if (resultOut) *resultOut = result;
+    EXPECT_EQ(result.exitCode, 0) << result.err;
+    const KeyValues pairs = keyValues(result.lastLine());
+    EXPECT_EQ(keysOf(pairs),
+              (std::vector<std::string>{"fem_step_ms", "elements", "tricubic", "trilinear",
+                                        "pyramid", "cg_iterations", "elastic_pass_ms",
+                                        "step_passes", "first_step_ms", "step_p99_ms",
+                                        "step_max_ms"}))
+        << result.lastLine();
+    for (const auto& [key, value] : pairs) {
+      if (key.size() > 3 && key.compare(key.size() - 3, 3, "_ms") == 0) {
+        EXPECT_TRUE(isMilliseconds(value)) << key << "=" << value;
+      }
+    }
+    std::map<std::string, double> v = numbersOf(pairs);
+    EXPECT_GT(v["first_step_ms"], 0.0);
+    EXPECT_GE(v["step_p99_ms"], v["fem_step_ms"]);
+    EXPECT_GE(v["step_max_ms"], v["step_p99_ms"]);
+    EXPECT_GT(v["elastic_pass_ms"], 0.0);
+    if (v["elastic_pass_ms"] > 0.0) {
+      // Each printed figure is rounded: the step to 0.0005 ms, the pass too, the ratio to 0.005.
+      const double ratio = v["fem_step_ms"] / v["elastic_pass_ms"];
+      const double slack =
+          0.005 + 1.01 * ratio * (0.0005 / v["elastic_pass_ms"] + 0.0005 / v["fem_step_ms"]);
+      EXPECT_NEAR(v["step_passes"], ratio, slack) << result.lastLine();
+    }
+    return v;
+  }
+};
+
+TEST_F(BenchFemCliTest, BenchFemReportsStepFigures) {
+  CliResult result;
+  const std::map<std::string, double> v = bench(kBlock + " --steps 5", &result);
+  EXPECT_EQ(v.at("elements"), 216);
+  EXPECT_GT(v.at("cg_iterations"), 0);
+  EXPECT_NE(result.out.find(" paint_every=0\n"), std::string::npos) << result.out;
+  EXPECT_EQ(lineStartingWith(result.out, "dabs"), "") << result.out;
+}
+
+TEST_F(BenchFemCliTest, BenchFemPaintEveryPaintsDeterministicDabs) {
+  CliResult first, second;
+  const std::map<std::string, double> a = bench(kBlock + " --steps 6 --paint-every 2", &first);
+  EXPECT_NE(first.out.find(" paint_every=2\n"), std::string::npos) << first.out;
+  const std::string dabs = lineStartingWith(first.out, "dabs");
+  ASSERT_FALSE(dabs.empty()) << first.out;
+  const std::map<std::string, double> d = numbersOf(keyValues(dabs));
+  EXPECT_EQ(d.at("dabs"), 3);          // before measured steps 0, 2 and 4
+  EXPECT_EQ(d.at("warmup_dabs"), 2);   // before warm-up steps 0 and 2
+  // One control cell: block3's are unit cubes, a little smaller once refined (level 1 shrinks
+  // the solid a little).
+  EXPECT_GT(d.at("dab_radius"), 0.9);
+  EXPECT_LE(d.at("dab_radius"), 1.0);
+  EXPECT_GT(d.at("painted_samples"), 0);
+
+  // The same inputs paint the same dabs, so the solver does the same work.
+  const std::map<std::string, double> b = bench(kBlock + " --steps 6 --paint-every 2", &second);
+  EXPECT_EQ(lineStartingWith(second.out, "dabs"), dabs);
+  EXPECT_EQ(a.at("cg_iterations"), b.at("cg_iterations"));
+
+  CliResult every;
+  bench(kBlock + " --steps 4 --paint-every 1", &every);
+  EXPECT_NE(lineStartingWith(every.out, "dabs").find("dabs=4 warmup_dabs=3 "), std::string::npos)
+      << every.out;
+}
+
+TEST_F(BenchFemCliTest, BenchFemRunsAScene) {
+  CliResult result;
+  const std::map<std::string, double> v =
+      bench(quote(kAssets + "bunny.obj") + " --cage 2 --steps 2 --paint-every 1", &result);
+  EXPECT_GT(v.at("elements"), 0);
+  EXPECT_NE(result.out.find(" levels=1 "), std::string::npos) << result.out;
+  // The scene's own pins (its top layer), not the lowest layer the control-mesh path fixes.
+  EXPECT_EQ(result.out.find(" fixed=0\n"), std::string::npos) << result.out;
+  EXPECT_NE(lineStartingWith(result.out, "dabs").find("dabs=2 "), std::string::npos)
+      << result.out;
+}
+
+TEST_F(BenchFemCliTest, BenchFemRefusesBadOptions) {
+  for (const char* bad : {"0", "-1", "x", "1.5", ""})
+    expectBadInput("bench fem " + kBlock + " --steps 2 --paint-every " + quote(bad),
+                   "--paint-every must be an integer from 1");
+  expectBadInput("bench fem " + kBlock + " --cage 4", "--cage is for surfaces");
+  expectBadInput("bench fem " + quote(kAssets + "bunny.obj") + " --E 5", "--E is for control");
+  expectBadInput("bench fem " + quote(kAssets + "bunny.obj") + " --levels 4",
+                 "--levels must be an integer from 1 to 3");
+  expectBadInput("bench fem", "exactly one CONTROL file or SCENE");
+  expectBadInput("bench subdivide " + kBlock + " --paint-every 2",
+                 "--paint-every applies to bench fem");
+}
+
+}  // namespace
+}  // namespace sculpt::test
