@@ -135,16 +135,6 @@ double elasticPassMs(Simulator& simulator) {
   return median(std::move(samples));
 }
 
-// Fixes the control points whose rest y is the least (the bottom layer); returns how many.
-uint32_t fixLowestLayer(Simulator& simulator) {
-  const Points& rest = simulator.model().restControl();
-  const double low = rest.col(1).minCoeff();
-  const double extent = (rest.colwise().maxCoeff() - rest.colwise().minCoeff()).maxCoeff();
-  const double tolerance = 1e-9 * std::max(extent, 1.0);
-  const double inf = std::numeric_limits<double>::infinity();
-  return simulator.fixInBox(Eigen::AlignedBox3d(Eigen::Vector3d(-inf, low - tolerance, -inf),
-                                                Eigen::Vector3d(inf, low + tolerance, inf)));
-}
 
 uint32_t fixedCount(const Simulator& simulator) {
   const std::vector<uint8_t>& mask = simulator.fixedMask();
@@ -253,6 +243,16 @@ int benchScene(const CliArgs& args, const std::string& file, const BenchRun& giv
 }
 
 }  // namespace
+
+uint32_t fixLowestLayer(Simulator& simulator) {
+  const Points& rest = simulator.model().restControl();
+  const double low = rest.col(1).minCoeff();
+  const double extent = (rest.colwise().maxCoeff() - rest.colwise().minCoeff()).maxCoeff();
+  const double tolerance = 1e-9 * std::max(extent, 1.0);
+  const double inf = std::numeric_limits<double>::infinity();
+  return simulator.fixInBox(Eigen::AlignedBox3d(Eigen::Vector3d(-inf, low - tolerance, -inf),
+                                                Eigen::Vector3d(inf, low + tolerance, inf)));
+}
 
 double controlCellSize(const FemModel& model) {
   const FemMesh& mesh = model.mesh();

@@ -38,6 +38,9 @@ struct FemBenchFigures {
   long paintedSamples = 0;      ///< Gauss samples touched by all dabs
 };
 
+/// Fixes the control points whose rest y is the least (the bottom layer); returns how many.
+uint32_t fixLowestLayer(Simulator& simulator);
+
 /// Edge length of a typical control cell: cbrt(rest volume / #control cells) (m).
 double controlCellSize(const FemModel& model);
 

@@ -132,16 +132,6 @@ int nearestLevel(const CellComplex& mesh, uint32_t target) {
   return best;
 }
 
-// Fixes the control points whose rest y is the least, as bench fem does.
-void fixLowestLayer(Simulator& simulator) {
-  const Points& rest = simulator.model().restControl();
-  const double low = rest.col(1).minCoeff();
-  const double extent = (rest.colwise().maxCoeff() - rest.colwise().minCoeff()).maxCoeff();
-  const double tolerance = 1e-9 * std::max(extent, 1.0);
-  const double inf = std::numeric_limits<double>::infinity();
-  simulator.fixInBox(Eigen::AlignedBox3d(Eigen::Vector3d(-inf, low - tolerance, -inf),
-                                         Eigen::Vector3d(inf, low + tolerance, inf)));
-}
 
 struct Measured {
   ElementCounts counts;

@@ -62,7 +62,7 @@ TEST(StylusWindow, SimulatedDeviceMidPullShowsTheForceInTheMeterAndTheBackground
     left = true;
     const ImVec2 start = mouse;
     double strongest = 0;
-    // The picture is taken mid-drag at a frame that starts with the force felt above 0.3 N (on a loaded
+    // The picture is taken mid-drag at a frame that starts with the force felt above 0.5 N (on a loaded
     // machine some probes are older than the safety's 100 ms and the force fades between them).
     const char* images = std::getenv("SCULPT_SESSION_IMAGES");
     const fs::path shot = (images ? fs::path(images) : scratch.path()) / "stylus-simulated-pull.png";
@@ -72,7 +72,9 @@ TEST(StylusWindow, SimulatedDeviceMidPullShowsTheForceInTheMeterAndTheBackground
       std::this_thread::sleep_for(std::chrono::milliseconds(15));  // servo and simulation run
       const double force = app.stylus().status().force.norm();
       strongest = std::max(strongest, force);
-      taken = k >= 25 && force > 0.3;
+      // 0.5 N of the 3.3 N limit: a tint of 15%, clear of the grey's rounding (at 0.28 N the
+      // background was r 45, g 43 and the check below failed on a loaded machine).
+      taken = k >= 25 && force > 0.5;
       app.headlessFrame(taken ? shot.string() : std::string());
     }
     const haptics::HapticStatus status = app.stylus().status();
@@ -84,7 +86,7 @@ TEST(StylusWindow, SimulatedDeviceMidPullShowsTheForceInTheMeterAndTheBackground
     EXPECT_GT(strongest, 0.05) << "the hand feels the pull";
     EXPECT_LE(strongest, status.forceLimit);
     ASSERT_EQ(app.sceneView().frame().springs.size(), 1u) << "the stylus' spring is in the scene";
-    ASSERT_TRUE(taken) << "no frame with the force above 0.3 N";
+    ASSERT_TRUE(taken) << "no frame with the force above 0.5 N";
     int width = 0, height = 0, channels = 0;
     unsigned char* pixels = stbi_load(shot.c_str(), &width, &height, &channels, 3);
     ASSERT_NE(pixels, nullptr) << shot;
