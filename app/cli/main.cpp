@@ -7,6 +7,7 @@
 #include <string>
 #include <vector>
 
+#include "cli/bench_table1.h"
 #include "cli/cli_common.h"
 #include "cli/commands.h"
 
@@ -20,7 +21,7 @@ void printUsage(std::ostream& out) {
       << sculpt::cli::kStaticUsage << '\n'
       << sculpt::cli::kSimulateUsage << '\n'
       << sculpt::cli::kDeformUsage << '\n'
-      << sculpt::cli::kBenchUsage << '\n'
+      << sculpt::cli::kBenchUsage << sculpt::cli::kBenchTable1Usage << '\n'
       << sculpt::cli::kStudyUsage << '\n'
       << sculpt::cli::kDevicesUsage << '\n'
       << sculpt::cli::kHapticsUsage << '\n'
