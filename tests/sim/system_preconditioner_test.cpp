@@ -30,6 +30,13 @@ Eigen::VectorXd randomVector(Eigen::Index n, unsigned seed) {
   return v;
 }
 
+// block3's bottom layer pinned, gravity on.
+void pinTheBottomUnderGravity(Simulator& simulator) {
+  simulator.fixInBox(Eigen::AlignedBox3d(Eigen::Vector3d(-1, -1, -1), Eigen::Vector3d(4, 0.01, 4)));
+  simulator.addLoad(
+      std::make_unique<GravityForm>(simulator.model(), Eigen::Vector3d(0, -9.81, 0)));
+}
+
 Material scaledMaterial(double factor) {
   Material m;
   m.youngs *= factor;
@@ -78,8 +85,7 @@ TEST(SystemPreconditioner, LocalPaintKeepsTheSolveConvergingWithoutRefactoring) 
   auto model = test::buildModel(test::block3(), 1, false);
   ASSERT_TRUE(model);
   Simulator simulator(*model);
-  simulator.fixInBox(Eigen::AlignedBox3d(Eigen::Vector3d(-1, -1, -1), Eigen::Vector3d(4, 0.01, 4)));
-  simulator.addLoad(std::make_unique<GravityForm>(*model, Eigen::Vector3d(0, -9.81, 0)));
+  pinTheBottomUnderGravity(simulator);
   const StepReport first = simulator.step();
   ASSERT_TRUE(first.ok);
   for (int dab = 0; dab < 6; ++dab) {
@@ -100,8 +106,7 @@ TEST(SystemPreconditioner, PinEditsAreServedByTheOldFactorUntilTheNewOneIsAdopte
   auto model = test::buildModel(test::block3(), 1, false);
   ASSERT_TRUE(model);
   Simulator simulator(*model);
-  simulator.fixInBox(Eigen::AlignedBox3d(Eigen::Vector3d(-1, -1, -1), Eigen::Vector3d(4, 0.01, 4)));
-  simulator.addLoad(std::make_unique<GravityForm>(*model, Eigen::Vector3d(0, -9.81, 0)));
+  pinTheBottomUnderGravity(simulator);
   ASSERT_TRUE(simulator.step().ok);
   simulator.setFixed(uint32_t(model->numControlPoints() - 1), true);  // a new pin at the top
   for (int i = 0; i < 12; ++i) {
@@ -118,9 +123,7 @@ TEST(SystemPreconditioner, PaintAndPinEditsGiveTheSameBitsTwice) {
   auto run = [] {
     auto model = test::buildModel(test::block3(), 1, false);
     Simulator simulator(*model);
-    simulator.fixInBox(
-        Eigen::AlignedBox3d(Eigen::Vector3d(-1, -1, -1), Eigen::Vector3d(4, 0.01, 4)));
-    simulator.addLoad(std::make_unique<GravityForm>(*model, Eigen::Vector3d(0, -9.81, 0)));
+    pinTheBottomUnderGravity(simulator);
     for (int i = 0; i < 14; ++i) {
       if (i % 3 == 1)
         model->paintMaterial(Eigen::Vector3d(1.5, 1.0 + 0.1 * i, 1.5), 1.0,
