@@ -126,6 +126,7 @@ void Simulator::refreshFreeDofs() {
       for (int c = 0; c < 3; ++c) freeDofs_.push_back(int(3 * i) + c);
   ++freeDofsVersion_;
   lastIncrement_.resize(0, 3);
+  lastImplicitStep_.resize(0, 3);
 }
 
 Form* Simulator::addLoad(std::unique_ptr<Form> load) {
@@ -329,7 +330,7 @@ Simulator::Attempt Simulator::implicitSubstep(double h) {
   Points dx;
   // The previous step's correction to its prediction: in a smooth motion the next one is
   // close, and CG starts nearer the answer (same tolerance, fewer iterations).
-  if (lastImplicitH_ != h || freeDofsVersionOfStep_ != freeDofsVersion_) lastImplicitStep_.resize(0, 3);
+  if (lastImplicitH_ != h) lastImplicitStep_.resize(0, 3);
   const CgResult cg = newtonStep(g, true, settings_.implicitTolerance, dx, lastImplicitStep_);
   a.iterations = cg.iterations;
   a.residual = cg.relativeResidual;
@@ -345,7 +346,6 @@ Simulator::Attempt Simulator::implicitSubstep(double h) {
   position_ += dx;
   lastImplicitStep_ = dx;
   lastImplicitH_ = h;
-  freeDofsVersionOfStep_ = freeDofsVersion_;
   velocity_ = (position_ - start) / h;
   Attempt check = checkState(start, loadBefore);
   check.iterations = a.iterations;

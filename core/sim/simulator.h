@@ -159,7 +159,6 @@ class Simulator {
   Points lastIncrement_;                   // warm start of the CG solves
   Points lastImplicitStep_;                // warm start of the implicit step's solve (h below)
   double lastImplicitH_ = 0;
-  uint64_t freeDofsVersionOfStep_ = 0;
   double time_ = 0;
   std::vector<uint8_t> fixed_;
   std::vector<int> freeDofs_;  // indices 3i + c of free coordinates
