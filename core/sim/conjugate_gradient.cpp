@@ -17,9 +17,14 @@ CgResult solve(const LinearOperator& A, const LinearOperator& preconditioner,
     return result;
   }
   if (x.size() != b.size() || !x.allFinite()) x.setZero(b.size());
-  Eigen::VectorXd Ax(b.size()), r, z(b.size()), p, Ap(b.size());
-  A(x, Ax);
-  r = b - Ax;
+  Eigen::VectorXd r, z(b.size()), p, Ap(b.size());
+  // A product costs about an elastic pass: none for a zero start.
+  if (x.isZero(0.0)) {
+    r = b;
+  } else {
+    A(x, Ap);
+    r = b - Ap;
+  }
   result.relativeResidual = r.norm() / bNorm;
   if (result.relativeResidual <= tolerance) {
     result.converged = true;

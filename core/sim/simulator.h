@@ -126,9 +126,7 @@ class Simulator {
   Points prepareAndGradient(const Points& x, bool withInertia);
   // Solves H dx = -gradient on the free coordinates by preconditioned CG (H at the prepared
   // state, the preconditioner already current).
-  // `warmStart` (rows() == 0: none) is CG's first iterate.
-  CgResult newtonStep(const Points& gradient, bool withInertia, double tolerance, Points& dx,
-                      const Points& warmStart = Points());
+  CgResult newtonStep(const Points& gradient, bool withInertia, double tolerance, Points& dx);
   Points hessianProduct(const Points& dx, bool withInertia);
   void zeroFixed(Points& x) const;
   double systemLoadEnergy(const Points& x);
@@ -157,8 +155,6 @@ class Simulator {
   Points position_, velocity_, previous_;  // previous_: p(t - dt) of the paper's scheme
   double previousStep_ = 0;                // the dt that previous_ belongs to (0: none)
   Points lastIncrement_;                   // warm start of the CG solves
-  Points lastImplicitStep_;                // warm start of the implicit step's solve (h below)
-  double lastImplicitH_ = 0;
   double time_ = 0;
   std::vector<uint8_t> fixed_;
   std::vector<int> freeDofs_;  // indices 3i + c of free coordinates
@@ -168,6 +164,11 @@ class Simulator {
   Points scratchNodes_, scratchNodeDirection_;
   Points scratchControl_;  // the control state scratchNodes_ belongs to (no rows: none)
   uint64_t freeDofsVersion_ = 0;  // counts changes of freeDofs_
+  // (1/h^2) M~ + (1/h) D~: the inertia and damping forms' Hessian in the implicit step, one
+  // product instead of two (for stepMatrixStep_ and the mass matrix version).
+  RowSparseMatrix stepMatrix_;
+  double stepMatrixStep_ = 0;
+  uint64_t stepMatrixVersion_ = ~uint64_t(0);
   // 2M~ + h D~ of the paper's scheme on the free coordinates (in freeDofs_ order), for
   // paperMatrixStep_, the mass matrix version and the free set it was built for.
   SparseMatrix paperMatrix_;

@@ -1,11 +1,31 @@
 #include "sim/standard_forms.h"
 
+#include "util/parallel_for.h"
+
 namespace sculpt {
 
 Points applyScalarMatrix(const SparseMatrix& S, const Points& x) {
   Eigen::MatrixXd columns = x;  // column-major copy for the sparse product
   Points result = S * columns;
   return result;
+}
+
+void addScalarMatrixProduct(const RowSparseMatrix& S, const Points& x, Points& out) {
+  parallelChunks(uint32_t(S.rows()), 256, [&](uint32_t begin, uint32_t end, unsigned) {
+    for (uint32_t i = begin; i < end; ++i) {
+      double sum[3] = {0, 0, 0};
+      for (RowSparseMatrix::InnerIterator it(S, Eigen::Index(i)); it; ++it) {
+        const double* row = x.row(it.col()).data();
+        sum[0] += it.value() * row[0];
+        sum[1] += it.value() * row[1];
+        sum[2] += it.value() * row[2];
+      }
+      double* target = out.row(Eigen::Index(i)).data();
+      target[0] += sum[0];
+      target[1] += sum[1];
+      target[2] += sum[2];
+    }
+  });
 }
 
 void ElasticForm::prepare(const FormState& x) {

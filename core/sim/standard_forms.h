@@ -81,6 +81,10 @@ class GravityForm : public Form {
 /// Scalar matrix S applied to each coordinate column of an N by 3 array.
 Points applyScalarMatrix(const SparseMatrix& S, const Points& x);
 
+/// out += S x for a scalar S acting on each coordinate column, rows split over the workers (the
+/// reduced mass matrices couple every control point with hundreds of others).
+void addScalarMatrixProduct(const RowSparseMatrix& S, const Points& x, Points& out);
+
 }  // namespace sculpt
 
 namespace sculpt {

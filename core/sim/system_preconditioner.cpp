@@ -1,6 +1,7 @@
 #include "sim/system_preconditioner.h"
 
 #include <chrono>
+#include <optional>
 
 #include "sim/linear_stiffness.h"
 
@@ -28,6 +29,7 @@ struct SystemPreconditioner::Request {
   double scales[3] = {0, 0, 0};
   std::vector<int> freeDofs;
   uint64_t materialVersion = 0;
+  std::optional<SparseMatrix> stiffness;  // K~lin, when assembled already
 };
 
 namespace {
@@ -38,6 +40,7 @@ SystemPreconditioner::SystemPreconditioner(SparseCholesky::Method method) : meth
 
 SystemPreconditioner::~SystemPreconditioner() {
   if (pending_.valid()) pending_.wait();
+  if (standIn_.valid()) standIn_.wait();
 }
 
 namespace {
@@ -63,7 +66,9 @@ std::unique_ptr<SystemPreconditioner::Factor> factorRequest(
   const Clock::time_point start = Clock::now();
   auto factor = std::make_unique<SystemPreconditioner::Factor>(method);
   const double a = request.scales[0], b = request.scales[1], c = request.scales[2];
-  const SparseMatrix stiffness = reducedLinearStiffness(*request.mesh, request.lame, *request.A);
+  const SparseMatrix stiffness = request.stiffness
+                                     ? *request.stiffness
+                                     : reducedLinearStiffness(*request.mesh, request.lame, *request.A);
   factor->stiffnessDiagonal = stiffness.diagonal();
   factor->modulus = controlPointModulus(*request.mesh, request.lame, *request.A);
   SparseMatrix S = c * stiffness;
@@ -109,8 +114,23 @@ std::unique_ptr<SystemPreconditioner::Factor> factorRequest(
 }  // namespace
 
 std::unique_ptr<SystemPreconditioner::Factor> SystemPreconditioner::makeFactor(
-    const FemModel& model, double a, double b, double c, const std::vector<int>& freeDofs) const {
-  return factorRequest(requestFor(model, a, b, c, freeDofs), method_);
+    const FemModel& model, double a, double b, double c, const std::vector<int>& freeDofs) {
+  Request request = requestFor(model, a, b, c, freeDofs);
+  if (standIn_.valid()) {
+    StandIn early = standIn_.get();
+    if (early.materialVersion == request.materialVersion) request.stiffness = std::move(early.matrix);
+  }
+  return factorRequest(request, method_);
+}
+
+void SystemPreconditioner::prepareFirstFactor(const FemModel& model) {
+  if (factor_ || standIn_.valid()) return;
+  // A copy of the materials: the worker must not read the model while the simulation runs on.
+  standIn_ = std::async(std::launch::async, [&mesh = model.mesh(), &A = model.stencilMatrix(),
+                                             lame = model.mesh().gaussLame,
+                                             version = model.materialVersion()] {
+    return StandIn{reducedLinearStiffness(mesh, lame, A), version};
+  });
 }
 
 void SystemPreconditioner::adopt(std::unique_ptr<Factor> factor) {

@@ -40,6 +40,11 @@ class SystemPreconditioner {
   /// cannot be factored even with a small diagonal shift (then apply() is the identity).
   bool update(const FemModel& model, double massScale, double dampingScale, double stiffnessScale,
               const std::vector<int>& freeDofs);
+  /// Before the first update(): starts assembling the stand-in stiffness of the first factor on
+  /// a worker thread, so that it overlaps what the step computes before it needs the factor
+  /// (the mass matrices at their first use take as long). update() takes it if the materials
+  /// have not changed since.
+  void prepareFirstFactor(const FemModel& model);
   /// z ~ S^-1 r on the free coordinates given to the last update().
   void apply(const Eigen::VectorXd& r, Eigen::VectorXd& z) const;
   /// The CG iterations the solve after the last update() took: the measure of the rescaled
@@ -53,7 +58,7 @@ class SystemPreconditioner {
 
  private:
   std::unique_ptr<Factor> makeFactor(const FemModel& model, double a, double b, double c,
-                                     const std::vector<int>& freeDofs) const;
+                                     const std::vector<int>& freeDofs);
   void adopt(std::unique_ptr<Factor> factor);
   void rescale(const FemModel& model, const std::vector<int>& freeDofs);
   void startBackground(const FemModel& model, double a, double b, double c,
@@ -73,6 +78,11 @@ class SystemPreconditioner {
   int freshIterations_ = -1;
   bool drifted_ = false;
   std::future<std::unique_ptr<Factor>> pending_;
+  struct StandIn {
+    SparseMatrix matrix;
+    uint64_t materialVersion = 0;
+  };
+  std::future<StandIn> standIn_;  // prepareFirstFactor's assembly
   int solvesSinceStart_ = 0;
   PreconditionerStats stats_;
   static constexpr double kDriftFactor = 1.5;
