@@ -54,5 +54,31 @@ TEST(ConjugateGradient, RightHandSidesNearTheLargestDoublesSolveToTheSameBits) {
   for (int i = 0; i < 30; ++i) EXPECT_EQ(xBig[i], big * x[i]) << i;
 }
 
+TEST(ConjugateGradient, AZeroStartAppliesTheOperatorOncePerIteration) {
+  // The operator is an element pass in the implicit step: a zero first iterate's residual is b
+  // and needs no product; a nonzero one needs exactly one.
+  const Eigen::MatrixXd A = spdMatrix(30);
+  Eigen::VectorXd b(30);
+  for (int i = 0; i < 30; ++i) b[i] = std::sin(1.3 * i) - 0.3;
+  int products = 0;
+  const LinearOperator op = [&](const Eigen::VectorXd& in, Eigen::VectorXd& out) {
+    ++products;
+    out = A * in;
+  };
+  const LinearOperator identity = [](const Eigen::VectorXd& r, Eigen::VectorXd& z) { z = r; };
+  Eigen::VectorXd x = Eigen::VectorXd::Zero(30);
+  const CgResult zeroStart = conjugateGradient(op, identity, b, x, 1e-10, 200);
+  ASSERT_TRUE(zeroStart.converged);
+  EXPECT_EQ(products, zeroStart.iterations);
+  EXPECT_LT((x - A.llt().solve(b)).norm(), 1e-8 * b.norm());
+
+  products = 0;
+  Eigen::VectorXd warm = Eigen::VectorXd::Constant(30, 0.1);
+  const CgResult warmStart = conjugateGradient(op, identity, b, warm, 1e-10, 200);
+  ASSERT_TRUE(warmStart.converged);
+  EXPECT_EQ(products, warmStart.iterations + 1);
+  EXPECT_LT((warm - x).norm(), 1e-8 * x.norm());
+}
+
 }  // namespace
 }  // namespace sculpt

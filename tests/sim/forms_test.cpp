@@ -252,6 +252,23 @@ CellComplex jitteredBox() {
   return box;
 }
 
+TEST(FormsTest, TheParallelRowProductIsTheScalarMatrixProduct) {
+  // The implicit step applies (1/h^2) M~ + (1/h) D~ through addScalarMatrixProduct; 1,000
+  // control points are split over the workers.
+  auto model = buildModel(test::hexGrid(9, 9, 9), 1, false);
+  ASSERT_TRUE(model);
+  ASSERT_EQ(model->numControlPoints(), 1000);
+  const double h = 1.0 / 60;
+  const SparseMatrix S = (1 / (h * h)) * model->reducedMass() + (1 / h) * model->reducedDamping();
+  std::mt19937_64 rng(11);
+  const Points x = randomPoints(model->numControlPoints(), 1.0, rng);
+  const Points before = randomPoints(model->numControlPoints(), 1.0, rng);
+  Points out = before;
+  addScalarMatrixProduct(RowSparseMatrix(S), x, out);
+  const Points expected = before + applyScalarMatrix(S, x);
+  EXPECT_LT((out - expected).cwiseAbs().maxCoeff(), 1e-12 * expected.cwiseAbs().maxCoeff());
+}
+
 TEST(FormsTest, PressureEnclosesTheBoxVolume) {
   auto model = buildModel(jitteredBox(), setupFor(1, true));
   ASSERT_TRUE(model);
