@@ -1,7 +1,9 @@
 #include "sim/system_preconditioner.h"
 
+#include <algorithm>
 #include <chrono>
 #include <optional>
+#include <stdexcept>
 
 #include "sim/linear_stiffness.h"
 
@@ -72,26 +74,32 @@ std::unique_ptr<SystemPreconditioner::Factor> factorRequest(
   factor->stiffnessDiagonal = stiffness.diagonal();
   factor->modulus = controlPointModulus(*request.mesh, request.lame, *request.A);
   SparseMatrix S = c * stiffness;
-  if (a != 0) S += a * kroneckerIdentity3(request.mass);
-  if (b != 0) S += b * kroneckerIdentity3(request.damping);
+  if (a != 0 || b != 0) {
+    // a M~ + b D~ is scalar: summed before it is spread over the three coordinates.
+    SparseMatrix inertia = a != 0 ? SparseMatrix(a * request.mass) : SparseMatrix(b * request.damping);
+    if (a != 0 && b != 0) inertia += b * request.damping;
+    S += kroneckerIdentity3(inertia);
+  }
 
-  // Restrict to the free coordinates.
+  // Restrict to the free coordinates. They are increasing, so every kept column keeps its rows
+  // in order and is copied as it is (no sort).
   const std::vector<int>& freeDofs = request.freeDofs;
   std::vector<int> freeIndex(size_t(S.rows()), -1);
   for (size_t k = 0; k < freeDofs.size(); ++k) freeIndex[size_t(freeDofs[k])] = int(k);
-  std::vector<Eigen::Triplet<double>> triplets;
-  triplets.reserve(size_t(S.nonZeros()));
-  double diagonalSum = 0;
-  for (int col = 0; col < S.outerSize(); ++col)
-    for (SparseMatrix::InnerIterator it(S, col); it; ++it) {
-      const int r = freeIndex[size_t(it.row())], cc = freeIndex[size_t(it.col())];
-      if (r < 0 || cc < 0) continue;
-      triplets.emplace_back(r, cc, it.value());
-      if (r == cc) diagonalSum += it.value();
-    }
   const int n = int(freeDofs.size());
   SparseMatrix restricted(n, n);
-  restricted.setFromTriplets(triplets.begin(), triplets.end());
+  restricted.reserve(S.nonZeros());
+  double diagonalSum = 0;
+  for (int k = 0; k < n; ++k) {
+    restricted.startVec(k);
+    for (SparseMatrix::InnerIterator it(S, freeDofs[size_t(k)]); it; ++it) {
+      const int r = freeIndex[size_t(it.row())];
+      if (r < 0) continue;
+      restricted.insertBack(r, k) = it.value();
+      if (r == k) diagonalSum += it.value();
+    }
+  }
+  restricted.finalize();
 
   // A solid held by nothing but springs has rigid modes in K~lin: shift them slightly.
   const double meanDiagonal = n > 0 ? diagonalSum / n : 1.0;
@@ -163,6 +171,8 @@ void SystemPreconditioner::adoptBackground() {
 
 bool SystemPreconditioner::update(const FemModel& model, double massScale, double dampingScale,
                                   double stiffnessScale, const std::vector<int>& freeDofs) {
+  if (!std::is_sorted(freeDofs.begin(), freeDofs.end()))
+    throw std::invalid_argument("SystemPreconditioner: free coordinates must be increasing");
   const double scales[3] = {massScale, dampingScale, stiffnessScale};
   // A factor from the worker is taken a fixed number of solves after it was started (waiting
   // if it is late), not when it happens to be ready: the results must not depend on timing.

@@ -36,8 +36,9 @@ class SystemPreconditioner {
   SystemPreconditioner(const SystemPreconditioner&) = delete;
   SystemPreconditioner& operator=(const SystemPreconditioner&) = delete;
 
-  /// Makes the preconditioner usable for S at the current materials. Returns false when S
-  /// cannot be factored even with a small diagonal shift (then apply() is the identity).
+  /// Makes the preconditioner usable for S at the current materials, on the free coordinates
+  /// `freeDofs` (increasing). Returns false when S cannot be factored even with a small diagonal
+  /// shift (then apply() is the identity).
   bool update(const FemModel& model, double massScale, double dampingScale, double stiffnessScale,
               const std::vector<int>& freeDofs);
   /// Before the first update(): starts assembling the stand-in stiffness of the first factor on
