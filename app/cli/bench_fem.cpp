@@ -31,7 +31,6 @@ namespace {
 
 using Clock = BenchClock;
 
-constexpr int kElasticPasses = 10;
 constexpr double kStiffer = 10.0, kSofter = 0.1;
 
 std::string ms(double value) {
@@ -116,25 +115,34 @@ class DabPainter {
   long painted_ = 0;
 };
 
-// Median time of one elastic force evaluation at the current positions, after one untimed call.
-double elasticPassMs(Simulator& simulator) {
-  FemModel& model = simulator.model();
-  ElasticForm elastic(model, simulator.settings().corotated);
-  const Points& control = simulator.positions();
-  Points nodes;
-  model.nodesFromControl(control, nodes);
-  const FormState state{control, nodes};
-  FormGradient gradient;
-  std::vector<double> samples;
-  for (int i = 0; i <= kElasticPasses; ++i) {
-    gradient.setZero(control.rows(), nodes.rows());
-    const Clock::time_point start = Clock::now();
-    elastic.prepareAndAddGradient(state, gradient);
-    if (i > 0) samples.push_back(millisecondsSince(start));
-  }
-  return median(std::move(samples));
-}
+// Times elastic force evaluations at the simulator's current positions, as the step's first pass
+// does them, without changing what the next step starts from (the rotations are its warm start).
+class ElasticPassTimer {
+ public:
+  explicit ElasticPassTimer(Simulator& simulator)
+      : simulator_(simulator), elastic_(simulator.model(), simulator.settings().corotated) {}
 
+  // The wall time of one pass (ms).
+  double timeOnePass() {
+    FemModel& model = simulator_.model();
+    const std::vector<Eigen::Matrix3d> rotations = model.elastic().rotations();
+    const Points& control = simulator_.positions();
+    model.nodesFromControl(control, nodes_);
+    const FormState state{control, nodes_};
+    gradient_.setZero(control.rows(), nodes_.rows());
+    const Clock::time_point start = Clock::now();
+    elastic_.prepareAndAddGradient(state, gradient_);
+    const double elapsed = millisecondsSince(start);
+    model.elastic().setRotations(rotations);
+    return elapsed;
+  }
+
+ private:
+  Simulator& simulator_;
+  ElasticForm elastic_;
+  Points nodes_;
+  FormGradient gradient_;
+};
 
 uint32_t fixedCount(const Simulator& simulator) {
   const std::vector<uint8_t>& mask = simulator.fixedMask();
@@ -294,10 +302,15 @@ FemBenchFigures runFemBench(Simulator& simulator, const FemBenchOptions& options
     paintBefore(i, figures.warmupDabs);
     step();
   }
-  std::vector<double> samples;
+  // One elastic pass is timed before every measured step, so that the two medians share the
+  // machine's state (its speed drifts by tens of percent within a minute on a shared VM).
+  ElasticPassTimer passTimer(simulator);
+  passTimer.timeOnePass();  // untimed: the first call allocates
+  std::vector<double> samples, passSamples;
   long long iterations = 0;
   for (int i = 0; i < options.steps; ++i) {
     paintBefore(i, figures.dabs);  // outside the timing: the step pays for what the dab changed
+    passSamples.push_back(passTimer.timeOnePass());
     const Clock::time_point start = Clock::now();
     const StepReport report = step();
     samples.push_back(millisecondsSince(start));
@@ -315,7 +328,7 @@ FemBenchFigures runFemBench(Simulator& simulator, const FemBenchOptions& options
     figures.maxStepMs = *std::max_element(samples.begin(), samples.end());
     figures.meanCgIterations = static_cast<double>(iterations) / double(samples.size());
   }
-  figures.elasticPassMs = elasticPassMs(simulator);
+  if (!passSamples.empty()) figures.elasticPassMs = median(passSamples);
   figures.stepPasses = figures.elasticPassMs > 0 ? figures.medianStepMs / figures.elasticPassMs
                                                  : std::numeric_limits<double>::infinity();
   if (painter) figures.paintedSamples = painter->samplesPainted();

@@ -27,7 +27,8 @@ struct FemBenchFigures {
   double medianStepMs = 0;   ///< median of the measured steps
   double p99StepMs = 0;      ///< their 99th percentile (nearest rank)
   double maxStepMs = 0;      ///< the slowest of them
-  double elasticPassMs = 0;  ///< median of one ElasticForm::prepareAndAddGradient
+  double elasticPassMs = 0;  ///< median of one ElasticForm::prepareAndAddGradient, one timed
+                             ///< before each measured step
   double stepPasses = 0;     ///< medianStepMs / elasticPassMs: a step in elastic passes
   double meanCgIterations = 0;  ///< per measured step
   int failures = 0;             ///< steps (all of them) that needed sub-steps or failed
