@@ -13,22 +13,59 @@
 namespace sculpt {
 namespace {
 
-// Shape function values at the Gauss points of each element kind: N(q, a).
-Eigen::MatrixXd tricubicShapeTable() {
-  const QuadratureRule rule = gaussLegendre(4);
-  double B[4][4];
-  for (int i = 0; i < 4; ++i) cubicBSplineBasis(rule.points[i], B[i]);
-  Eigen::MatrixXd N(kTricubicGaussPoints, kTricubicNodes);
-  for (int i = 0; i < 4; ++i)
-    for (int j = 0; j < 4; ++j)
-      for (int k = 0; k < 4; ++k)
-        for (int a = 0; a < 4; ++a)
-          for (int b = 0; b < 4; ++b)
-            for (int g = 0; g < 4; ++g)
-              N(i * 16 + j * 4 + k, a * 16 + b * 4 + g) = B[i][a] * B[j][b] * B[k][g];
-  return N;
-}
+// The tricubic element matrix sum_q w_q N_a(q) N_b(q) by sum factorisation: with nodes and
+// Gauss points both 4x4x4 tensor grids, N_(a1 a2 a3)(q1 q2 q3) = B_a1(q1) B_a2(q2) B_a3(q3), so the
+// sum is taken one axis at a time (about 21 k multiply-adds instead of 64^3 = 262 k).
+class TricubicMassKernel {
+ public:
+  TricubicMassKernel() {
+    const QuadratureRule rule = gaussLegendre(4);
+    for (int q = 0; q < 4; ++q) {
+      double B[4];
+      cubicBSplineBasis(rule.points[q], B);
+      for (int a = 0; a < 4; ++a)
+        for (int b = 0; b < 4; ++b) pair_[a * 4 + b][q] = B[a] * B[b];
+    }
+  }
 
+  // Me(a, b) for node ids a = a1*16 + a2*4 + a3 from weights w[q1*16 + q2*4 + q3].
+  void elementMatrix(const double* w, Eigen::MatrixXd& Me) const {
+    double t1[16][4][4];  // [a1 b1][q2][q3]
+    for (int p = 0; p < 16; ++p)
+      for (int q2 = 0; q2 < 4; ++q2)
+        for (int q3 = 0; q3 < 4; ++q3) {
+          double sum = 0;
+          for (int q1 = 0; q1 < 4; ++q1) sum += w[q1 * 16 + q2 * 4 + q3] * pair_[p][q1];
+          t1[p][q2][q3] = sum;
+        }
+    double t2[16][16][4];  // [a1 b1][a2 b2][q3]
+    for (int p = 0; p < 16; ++p)
+      for (int r = 0; r < 16; ++r)
+        for (int q3 = 0; q3 < 4; ++q3) {
+          double sum = 0;
+          for (int q2 = 0; q2 < 4; ++q2) sum += t1[p][q2][q3] * pair_[r][q2];
+          t2[p][r][q3] = sum;
+        }
+    Me.resize(kTricubicNodes, kTricubicNodes);
+    for (int a1 = 0; a1 < 4; ++a1)
+      for (int b1 = 0; b1 < 4; ++b1)
+        for (int a2 = 0; a2 < 4; ++a2)
+          for (int b2 = 0; b2 < 4; ++b2) {
+            const double* t = t2[a1 * 4 + b1][a2 * 4 + b2];
+            for (int a3 = 0; a3 < 4; ++a3)
+              for (int b3 = 0; b3 < 4; ++b3) {
+                const double* p3 = pair_[a3 * 4 + b3];
+                Me(a1 * 16 + a2 * 4 + a3, b1 * 16 + b2 * 4 + b3) =
+                    t[0] * p3[0] + t[1] * p3[1] + t[2] * p3[2] + t[3] * p3[3];
+              }
+          }
+  }
+
+ private:
+  double pair_[16][4];  // [a b][q]: B_a(q) B_b(q) of one axis
+};
+
+// Shape function values at the Gauss points of a linear element kind: N(q, a).
 Eigen::MatrixXd linearShapeTable(bool pyramid) {
   const QuadratureRule rule2 = gaussLegendre(2);
   const QuadratureRule ruleW = pyramid ? collapsedPyramidRule() : rule2;
@@ -46,7 +83,7 @@ Eigen::MatrixXd linearShapeTable(bool pyramid) {
 }  // namespace
 
 SparseMatrix assembleNodeMatrix(const FemMesh& mesh, MassField field) {
-  const Eigen::MatrixXd tricubicN = tricubicShapeTable();
+  const TricubicMassKernel tricubic;
   const Eigen::MatrixXd hexN = linearShapeTable(false);
   const Eigen::MatrixXd pyramidN = linearShapeTable(true);
   const uint32_t numElements = mesh.numElements();
@@ -97,6 +134,7 @@ SparseMatrix assembleNodeMatrix(const FemMesh& mesh, MassField field) {
   // Element matrices N^T diag(field * V) N, added in place (repeated nodes of pyramid apices
   // add up like any shared node).
   Eigen::VectorXd weights;
+  Eigen::MatrixXd Me;
   std::vector<uint32_t> order;
   for (uint32_t e = 0; e < numElements; ++e) {
     const uint32_t g0 = mesh.gaussBegin(e), count = mesh.gaussCount(e);
@@ -106,10 +144,12 @@ SparseMatrix assembleNodeMatrix(const FemMesh& mesh, MassField field) {
       weights[q] = (field == MassField::Density ? m.density : m.damping) * mesh.gaussVolume[g0 + q];
     }
     if (weights.isZero(0.0)) continue;
-    const Eigen::MatrixXd& N = e < mesh.numTricubic()
-                                   ? tricubicN
-                                   : (mesh.elementType[e] == ElementType::Pyramid ? pyramidN : hexN);
-    const Eigen::MatrixXd Me = N.transpose() * weights.asDiagonal() * N;
+    if (e < mesh.numTricubic()) {
+      tricubic.elementMatrix(weights.data(), Me);
+    } else {
+      const Eigen::MatrixXd& N = mesh.elementType[e] == ElementType::Pyramid ? pyramidN : hexN;
+      Me.noalias() = N.transpose() * weights.asDiagonal() * N;
+    }
     // The element's nodes in increasing id order, so that each column's entries are found by
     // one merge-like walk along the column instead of a binary search per entry.
     const std::span<const uint32_t> ids = elementNodes(e);

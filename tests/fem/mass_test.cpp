@@ -15,6 +15,8 @@
 
 #include "fem/fem_model.h"
 #include "fem/mass_matrix.h"
+#include "fem/quadrature.h"
+#include "subdiv/tricubic_patch.h"
 #include "support/mesh_builders.h"
 
 namespace sculpt {
@@ -214,6 +216,46 @@ TEST(MassMatrix, NodeMassMatchesGaussSumForAffineFields) {
   const double got = u.dot(M * u);
   EXPECT_NEAR(got, expected, 1e-12 * expected);
   std::printf("level-2 mixed mesh: u^T M u = %.15g, Gauss sum = %.15g\n", got, expected);
+}
+
+TEST(MassMatrix, TricubicEntriesAreTheQuadratureOfTheSquaredField) {
+  // u^T M u = sum_q rho V_q u(X_q)^2 for any node values u, with u(X_q) the tricubic B-spline
+  // sum at the Gauss point: checks every entry of the tricubic element matrices (which are
+  // summed one axis at a time) against the plain triple sum. u is zero on the nodes of linear
+  // elements, so only tricubic elements contribute.
+  auto model = makeModel(jittered(hexGrid(3, 3, 3, 1.0 / 3), 0.04, 5), 2, false);
+  ASSERT_TRUE(model);
+  const FemMesh& mesh = model->mesh();
+  ASSERT_GT(mesh.numTricubic(), 0u);
+  std::mt19937_64 rng(17);
+  std::uniform_real_distribution<double> uniform(-1, 1);
+  Eigen::VectorXd u(mesh.numNodes());
+  for (Eigen::Index n = 0; n < u.size(); ++n) u[n] = uniform(rng);
+  for (const auto& nodes : mesh.linearNodes)
+    for (uint32_t n : nodes) u[n] = 0;
+  const QuadratureRule rule = gaussLegendre(4);
+  double B[4][4];
+  for (int q = 0; q < 4; ++q) cubicBSplineBasis(rule.points[q], B[q]);
+  double expected = 0;
+  int nonzeroElements = 0;
+  for (uint32_t e = 0; e < mesh.numTricubic(); ++e) {
+    const auto& ids = mesh.tricubicNodes[e];
+    bool any = false;
+    for (int q = 0; q < 64; ++q) {
+      double value = 0;
+      for (int a = 0; a < 64; ++a)
+        value += B[q / 16][a / 16] * B[(q / 4) % 4][(a / 4) % 4] * B[q % 4][a % 4] * u[ids[a]];
+      const uint32_t g = mesh.gaussBegin(e) + uint32_t(q);
+      expected += mesh.gaussMaterial[g].density * mesh.gaussVolume[g] * value * value;
+      any = any || value != 0;
+    }
+    nonzeroElements += any;
+  }
+  ASSERT_GT(nonzeroElements, 8);
+  const double got = u.dot(assembleNodeMatrix(mesh, MassField::Density) * u);
+  EXPECT_NEAR(got, expected, 1e-12 * expected);
+  std::printf("%d tricubic elements: u^T M u = %.15g, Gauss sum = %.15g\n", nonzeroElements, got,
+              expected);
 }
 
 TEST(MassMatrix, DampingMatrixIsDampingOverDensityTimesMass) {
