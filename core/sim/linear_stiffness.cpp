@@ -52,18 +52,6 @@ LameParameters meanLame(const FemMesh& mesh, std::span<const LameParameters> lam
 
 }  // namespace
 
-SparseMatrix kroneckerIdentity3(const SparseMatrix& scalar) {
-  std::vector<Eigen::Triplet<double>> triplets;
-  triplets.reserve(size_t(scalar.nonZeros()) * 3);
-  for (int k = 0; k < scalar.outerSize(); ++k)
-    for (SparseMatrix::InnerIterator it(scalar, k); it; ++it)
-      for (int c = 0; c < 3; ++c)
-        triplets.emplace_back(int(3 * it.row() + c), int(3 * it.col() + c), it.value());
-  SparseMatrix result(3 * scalar.rows(), 3 * scalar.cols());
-  result.setFromTriplets(triplets.begin(), triplets.end());
-  return result;
-}
-
 SparseMatrix reducedLinearStiffness(const FemModel& model) {
   return reducedLinearStiffness(model.mesh(), model.mesh().gaussLame, model.stencilMatrix());
 }

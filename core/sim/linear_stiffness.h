@@ -24,7 +24,4 @@ SparseMatrix reducedLinearStiffness(const FemMesh& mesh, std::span<const LamePar
 Eigen::VectorXd controlPointModulus(const FemMesh& mesh, std::span<const LameParameters> lame,
                                     const SparseMatrix& A);
 
-/// The scalar matrix S acting on each coordinate: S x I3 in the interleaved numbering.
-SparseMatrix kroneckerIdentity3(const SparseMatrix& scalar);
-
 }  // namespace sculpt

@@ -308,7 +308,7 @@ bool Simulator::finiteForces(const Points& gradient, Attempt& attempt) const {
 
 Simulator::Attempt Simulator::implicitSubstep(double h) {
   Attempt a;
-  preconditioner_->prepareFirstFactor(model_);
+  preconditioner_->prepareFirstFactor(model_, freeDofs_);
   inertia_ = std::make_unique<InertiaForm>(model_, h);
   damping_ = std::make_unique<DampingForm>(model_, h);
   if (stepMatrixStep_ != h || stepMatrixVersion_ != model_.massVersion()) {

@@ -65,40 +65,52 @@ SparseCholesky::~SparseCholesky() = default;
 SparseCholesky::SparseCholesky(SparseCholesky&&) noexcept = default;
 SparseCholesky& SparseCholesky::operator=(SparseCholesky&&) noexcept = default;
 
-bool SparseCholesky::factor(const SparseMatrix& S) {
+void SparseCholesky::analyse(const SparseMatrix& S) {
+  if (!S.isCompressed()) {
+    SparseMatrix compressed = S;
+    compressed.makeCompressed();
+    analyse(compressed);
+    return;
+  }
   valid_ = false;
   size_ = S.rows();
+  if (impl_->samePattern(S)) return;
+  if (method_ == Method::Supernodal) {
+    // CHOLMOD's default orders with AMD and, when the fill is high, also with METIS, keeping
+    // the sparser factor. Past a few thousand rows our systems (3D lattices of control points)
+    // always kept METIS's nested dissection: the AMD analysis is skipped there (block10 at
+    // K = 1: 3.0 M nonzeros in L against AMD's 3.5 M).
+    auto& llt = impl_->supernodal;
+    cholmod_common& common = llt.cholmod();
+    if (S.rows() >= kNestedDissectionRows) {
+      common.nmethods = 1;
+      common.method[0].ordering = CHOLMOD_METIS;
+    } else {
+      common.nmethods = 0;
+    }
+    llt.analyzePattern(S);
+  } else {
+    impl_->simplicial.analyzePattern(S);
+  }
+  impl_->keepPattern(S);
+}
+
+bool SparseCholesky::factor(const SparseMatrix& S) {
   if (!S.isCompressed()) {
     SparseMatrix compressed = S;
     compressed.makeCompressed();
     return factor(compressed);
   }
-  const bool analysed = impl_->samePattern(S);
+  analyse(S);  // nothing to do while the pattern stays
   if (method_ == Method::Supernodal) {
     auto& llt = impl_->supernodal;
-    if (!analysed) {
-      // CHOLMOD's default orders with AMD and, when the fill is high, also with METIS, keeping
-      // the sparser factor. Past a few thousand rows our systems (3D lattices of control
-      // points) always kept METIS's nested dissection: the AMD analysis is skipped there
-      // (block10 at K = 1: 3.0 M nonzeros in L against AMD's 3.5 M).
-      cholmod_common& common = llt.cholmod();
-      if (S.rows() >= kNestedDissectionRows) {
-        common.nmethods = 1;
-        common.method[0].ordering = CHOLMOD_METIS;
-      } else {
-        common.nmethods = 0;
-      }
-      llt.analyzePattern(S);
-    }
     llt.factorize(S);
     valid_ = llt.info() == Eigen::Success;
   } else {
     auto& llt = impl_->simplicial;
-    if (!analysed) llt.analyzePattern(S);
     llt.factorize(S);
     valid_ = llt.info() == Eigen::Success;
   }
-  if (!analysed) impl_->keepPattern(S);
   return valid_;
 }
 

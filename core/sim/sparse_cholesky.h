@@ -25,6 +25,9 @@ class SparseCholesky {
   /// Factors S (both triangles stored, column-major). False when S is not positive definite;
   /// the previous factor is then gone.
   bool factor(const Eigen::SparseMatrix<double>& S);
+  /// The ordering and symbolic analysis for S's pattern alone: a later factor() of a matrix with
+  /// this pattern does only the numeric work.
+  void analyse(const Eigen::SparseMatrix<double>& S);
   bool valid() const { return valid_; }
   Eigen::Index size() const { return size_; }
   /// z = S^-1 r. Requires valid().

@@ -32,6 +32,7 @@ struct SystemPreconditioner::Request {
   std::vector<int> freeDofs;
   uint64_t materialVersion = 0;
   std::optional<SparseMatrix> stiffness;  // K~lin, when assembled already
+  std::optional<Eigen::VectorXd> modulus;  // its controlPointModulus
 };
 
 namespace {
@@ -42,7 +43,7 @@ SystemPreconditioner::SystemPreconditioner(SparseCholesky::Method method) : meth
 
 SystemPreconditioner::~SystemPreconditioner() {
   if (pending_.valid()) pending_.wait();
-  if (standIn_.valid()) standIn_.wait();
+  if (firstFactor_.valid()) firstFactor_.wait();
 }
 
 namespace {
@@ -63,43 +64,70 @@ SystemPreconditioner::Request requestFor(const FemModel& model, double a, double
   return request;
 }
 
-std::unique_ptr<SystemPreconditioner::Factor> factorRequest(
-    const SystemPreconditioner::Request& request, SparseCholesky::Method method) {
-  const Clock::time_point start = Clock::now();
-  auto factor = std::make_unique<SystemPreconditioner::Factor>(method);
-  const double a = request.scales[0], b = request.scales[1], c = request.scales[2];
-  const SparseMatrix stiffness = request.stiffness
-                                     ? *request.stiffness
-                                     : reducedLinearStiffness(*request.mesh, request.lame, *request.A);
-  factor->stiffnessDiagonal = stiffness.diagonal();
-  factor->modulus = controlPointModulus(*request.mesh, request.lame, *request.A);
-  SparseMatrix S = c * stiffness;
-  if (a != 0 || b != 0) {
-    // a M~ + b D~ is scalar: summed before it is spread over the three coordinates.
-    SparseMatrix inertia = a != 0 ? SparseMatrix(a * request.mass) : SparseMatrix(b * request.damping);
-    if (a != 0 && b != 0) inertia += b * request.damping;
-    S += kroneckerIdentity3(inertia);
-  }
-
-  // Restrict to the free coordinates. They are increasing, so every kept column keeps its rows
-  // in order and is copied as it is (no sort).
-  const std::vector<int>& freeDofs = request.freeDofs;
+// S restricted to the free coordinates (increasing, so every kept column keeps its rows in order
+// and is copied as it is); adds the restricted diagonal to `diagonalSum` when given.
+SparseMatrix restrictToFree(const SparseMatrix& S, const std::vector<int>& freeDofs,
+                            double* diagonalSum = nullptr) {
   std::vector<int> freeIndex(size_t(S.rows()), -1);
   for (size_t k = 0; k < freeDofs.size(); ++k) freeIndex[size_t(freeDofs[k])] = int(k);
   const int n = int(freeDofs.size());
   SparseMatrix restricted(n, n);
   restricted.reserve(S.nonZeros());
-  double diagonalSum = 0;
   for (int k = 0; k < n; ++k) {
     restricted.startVec(k);
     for (SparseMatrix::InnerIterator it(S, freeDofs[size_t(k)]); it; ++it) {
       const int r = freeIndex[size_t(it.row())];
       if (r < 0) continue;
       restricted.insertBack(r, k) = it.value();
-      if (r == k) diagonalSum += it.value();
+      if (r == k && diagonalSum) *diagonalSum += it.value();
     }
   }
   restricted.finalize();
+  return restricted;
+}
+
+// S = c K~lin + (a M~ + b D~) x I3 on K~lin's pattern. The consistent mass couples control
+// points one B-spline support further than the stand-in does; those entries are left out (per
+// axis the cubic B-spline Gram entry at that distance is 1/2416 of the diagonal), so that S's
+// pattern, and its ordering and symbolic analysis, are known once K~lin is.
+SparseMatrix systemMatrix(const SparseMatrix& stiffness, const SystemPreconditioner::Request& request) {
+  const double a = request.scales[0], b = request.scales[1], c = request.scales[2];
+  SparseMatrix S = c * stiffness;
+  if (a == 0 && b == 0) return S;
+  // a M~ + b D~ is scalar: summed, then added to the diagonal of each 3x3 block.
+  const SparseMatrix inertia =
+      a != 0 && b != 0 ? SparseMatrix(a * request.mass + b * request.damping)
+                       : (a != 0 ? SparseMatrix(a * request.mass) : SparseMatrix(b * request.damping));
+  for (Eigen::Index column = 0; column < S.outerSize(); ++column) {
+    const Eigen::Index point = column / 3, coordinate = column % 3;
+    SparseMatrix::InnerIterator m(inertia, point);
+    for (SparseMatrix::InnerIterator it(S, column); it; ++it) {
+      if (it.row() % 3 != coordinate) continue;
+      const Eigen::Index other = it.row() / 3;
+      while (m && m.row() < other) ++m;
+      if (m && m.row() == other) it.valueRef() += m.value();
+    }
+  }
+  return S;
+}
+
+std::unique_ptr<SystemPreconditioner::Factor> factorRequest(
+    const SystemPreconditioner::Request& request, SparseCholesky::Method method,
+    std::unique_ptr<SystemPreconditioner::Factor> analysed = nullptr) {
+  const Clock::time_point start = Clock::now();
+  auto factor = analysed ? std::move(analysed)
+                         : std::make_unique<SystemPreconditioner::Factor>(method);
+  const SparseMatrix stiffness = request.stiffness
+                                     ? *request.stiffness
+                                     : reducedLinearStiffness(*request.mesh, request.lame, *request.A);
+  factor->stiffnessDiagonal = stiffness.diagonal();
+  factor->modulus = request.modulus
+                        ? *request.modulus
+                        : controlPointModulus(*request.mesh, request.lame, *request.A);
+  double diagonalSum = 0;
+  const SparseMatrix restricted =
+      restrictToFree(systemMatrix(stiffness, request), request.freeDofs, &diagonalSum);
+  const int n = int(restricted.rows());
 
   // A solid held by nothing but springs has rigid modes in K~lin: shift them slightly.
   const double meanDiagonal = n > 0 ? diagonalSum / n : 1.0;
@@ -112,7 +140,7 @@ std::unique_ptr<SystemPreconditioner::Factor> factorRequest(
     if (factor->valid) break;
   }
   std::copy(request.scales, request.scales + 3, factor->scales);
-  factor->freeDofs = freeDofs;
+  factor->freeDofs = request.freeDofs;
   factor->materialVersion = request.materialVersion;
   factor->milliseconds =
       std::chrono::duration<double, std::milli>(Clock::now() - start).count();
@@ -124,21 +152,36 @@ std::unique_ptr<SystemPreconditioner::Factor> factorRequest(
 std::unique_ptr<SystemPreconditioner::Factor> SystemPreconditioner::makeFactor(
     const FemModel& model, double a, double b, double c, const std::vector<int>& freeDofs) {
   Request request = requestFor(model, a, b, c, freeDofs);
-  if (standIn_.valid()) {
-    StandIn early = standIn_.get();
-    if (early.materialVersion == request.materialVersion) request.stiffness = std::move(early.matrix);
+  std::unique_ptr<Factor> analysed;
+  if (firstFactor_.valid()) {
+    FirstFactor early = firstFactor_.get();
+    if (early.materialVersion == request.materialVersion) {
+      request.stiffness = std::move(early.stiffness);
+      request.modulus = std::move(early.modulus);
+      if (early.analysed->freeDofs == freeDofs) analysed = std::move(early.analysed);
+    }
   }
-  return factorRequest(request, method_);
+  return factorRequest(request, method_, std::move(analysed));
 }
 
-void SystemPreconditioner::prepareFirstFactor(const FemModel& model) {
-  if (factor_ || standIn_.valid()) return;
+void SystemPreconditioner::prepareFirstFactor(const FemModel& model,
+                                              const std::vector<int>& freeDofs) {
+  if (factor_ || firstFactor_.valid()) return;
   // A copy of the materials: the worker must not read the model while the simulation runs on.
-  standIn_ = std::async(std::launch::async, [&mesh = model.mesh(), &A = model.stencilMatrix(),
-                                             lame = model.mesh().gaussLame,
-                                             version = model.materialVersion()] {
-    return StandIn{reducedLinearStiffness(mesh, lame, A), version};
-  });
+  firstFactor_ = std::async(
+      std::launch::async, [&mesh = model.mesh(), &A = model.stencilMatrix(),
+                           lame = model.mesh().gaussLame, version = model.materialVersion(),
+                           freeDofs, method = method_] {
+        FirstFactor first;
+        first.materialVersion = version;
+        first.stiffness = reducedLinearStiffness(mesh, lame, A);
+        first.modulus = controlPointModulus(mesh, lame, A);
+        // S has K~lin's pattern (systemMatrix): its ordering and analysis can be made now.
+        first.analysed = std::make_unique<Factor>(method);
+        first.analysed->freeDofs = freeDofs;
+        first.analysed->cholesky.analyse(restrictToFree(first.stiffness, freeDofs));
+        return first;
+      });
 }
 
 void SystemPreconditioner::adopt(std::unique_ptr<Factor> factor) {

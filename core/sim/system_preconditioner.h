@@ -41,11 +41,12 @@ class SystemPreconditioner {
   /// shift (then apply() is the identity).
   bool update(const FemModel& model, double massScale, double dampingScale, double stiffnessScale,
               const std::vector<int>& freeDofs);
-  /// Before the first update(): starts assembling the stand-in stiffness of the first factor on
-  /// a worker thread, so that it overlaps what the step computes before it needs the factor
-  /// (the mass matrices at their first use take as long). update() takes it if the materials
-  /// have not changed since.
-  void prepareFirstFactor(const FemModel& model);
+  /// Before the first update(): starts the first factor's stand-in stiffness, and the ordering
+  /// and symbolic analysis of S for `freeDofs`, on a worker thread, so that they overlap what
+  /// the step computes before it needs the factor (the mass matrices at their first use take
+  /// as long). update() takes them if the materials (and, for the analysis, the free
+  /// coordinates) have not changed since.
+  void prepareFirstFactor(const FemModel& model, const std::vector<int>& freeDofs);
   /// z ~ S^-1 r on the free coordinates given to the last update().
   void apply(const Eigen::VectorXd& r, Eigen::VectorXd& z) const;
   /// The CG iterations the solve after the last update() took: the measure of the rescaled
@@ -79,11 +80,13 @@ class SystemPreconditioner {
   int freshIterations_ = -1;
   bool drifted_ = false;
   std::future<std::unique_ptr<Factor>> pending_;
-  struct StandIn {
-    SparseMatrix matrix;
+  struct FirstFactor {
     uint64_t materialVersion = 0;
+    SparseMatrix stiffness;
+    Eigen::VectorXd modulus;
+    std::unique_ptr<Factor> analysed;  // ordered and analysed, not yet factored
   };
-  std::future<StandIn> standIn_;  // prepareFirstFactor's assembly
+  std::future<FirstFactor> firstFactor_;  // prepareFirstFactor's work
   int solvesSinceStart_ = 0;
   PreconditionerStats stats_;
   static constexpr double kDriftFactor = 1.5;

@@ -130,13 +130,16 @@ TEST(SystemPreconditioner, TheFirstFactorPreparedOnAWorkerIsTheSameBits) {
     p.apply(r, z);
     return z;
   };
-  SystemPreconditioner plain, prepared;
-  prepared.prepareFirstFactor(*model);
-  EXPECT_TRUE(solveWith(prepared) == solveWith(plain));
+  SystemPreconditioner plain, prepared, preparedForOtherPins;
+  prepared.prepareFirstFactor(*model, dofs);
+  preparedForOtherPins.prepareFirstFactor(*model, allDofs(*model, 20));  // analysis not used
+  const Eigen::VectorXd z = solveWith(plain);
+  EXPECT_TRUE(solveWith(prepared) == z);
+  EXPECT_TRUE(solveWith(preparedForOtherPins) == z);
 
   // Materials painted after the preparation: its stand-in is not used.
   SystemPreconditioner beforePaint;
-  beforePaint.prepareFirstFactor(*model);
+  beforePaint.prepareFirstFactor(*model, dofs);
   ASSERT_GT(model->paintMaterial(Eigen::Vector3d(1.5, 1.5, 1.5), 1.0, scaledMaterial(10.0)), 0);
   SystemPreconditioner afterPaint;
   const Eigen::VectorXd expected = solveWith(afterPaint);
