@@ -129,9 +129,12 @@ std::unique_ptr<SystemPreconditioner::Factor> factorRequest(
       restrictToFree(systemMatrix(stiffness, request), request.freeDofs, &diagonalSum);
   const int n = int(restricted.rows());
 
+  // Every point pinned: nothing to solve for, and CHOLMOD refuses an empty matrix.
+  if (n == 0) factor->valid = true;
   // A solid held by nothing but springs has rigid modes in K~lin: shift them slightly.
   const double meanDiagonal = n > 0 ? diagonalSum / n : 1.0;
   for (double shift : {0.0, 1e-10, 1e-6}) {
+    if (n == 0) break;
     SparseMatrix shifted = restricted;
     if (shift > 0) {
       for (int i = 0; i < n; ++i) shifted.coeffRef(i, i) += shift * meanDiagonal;
@@ -179,7 +182,8 @@ void SystemPreconditioner::prepareFirstFactor(const FemModel& model,
         // S has K~lin's pattern (systemMatrix): its ordering and analysis can be made now.
         first.analysed = std::make_unique<Factor>(method);
         first.analysed->freeDofs = freeDofs;
-        first.analysed->cholesky.analyse(restrictToFree(first.stiffness, freeDofs));
+        if (!freeDofs.empty())
+          first.analysed->cholesky.analyse(restrictToFree(first.stiffness, freeDofs));
         return first;
       });
 }
@@ -284,15 +288,17 @@ void SystemPreconditioner::apply(const Eigen::VectorXd& r, Eigen::VectorXd& z) c
     z = r;
     return;
   }
+  const bool empty = factor_->freeDofs.empty();  // factored with every point pinned
   if (inverseSqrtScale_.size() == 0) {
-    factor_->cholesky.solve(r, z);
+    if (empty) z = r;  // then r is empty too
+    else factor_->cholesky.solve(r, z);
     return;
   }
   Eigen::VectorXd x = Eigen::VectorXd::Zero(Eigen::Index(factor_->freeDofs.size()));
   for (Eigen::Index k = 0; k < r.size(); ++k)
     if (const int j = toFactor_[size_t(k)]; j >= 0) x[j] = r[k] * inverseSqrtScale_[k];
   Eigen::VectorXd y;
-  factor_->cholesky.solve(x, y);
+  if (!empty) factor_->cholesky.solve(x, y);
   z.resize(r.size());
   for (Eigen::Index k = 0; k < r.size(); ++k) {
     const int j = toFactor_[size_t(k)];

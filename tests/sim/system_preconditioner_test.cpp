@@ -147,6 +147,33 @@ TEST(SystemPreconditioner, TheFirstFactorPreparedOnAWorkerIsTheSameBits) {
   EXPECT_TRUE(solveWith(beforePaint) == expected);
 }
 
+TEST(SystemPreconditioner, EveryPointPinnedNeedsNoFactor) {
+  // CHOLMOD refuses an empty matrix ("invalid xtype"): nothing is factored, nothing is printed.
+  auto model = test::buildModel(test::block3(), 1, false);
+  ASSERT_TRUE(model);
+  SystemPreconditioner preconditioner;
+  preconditioner.prepareFirstFactor(*model, {});
+  ASSERT_TRUE(preconditioner.update(*model, 3600, 60, 1, {}));
+  Eigen::VectorXd z;
+  preconditioner.apply(Eigen::VectorXd(0), z);
+  EXPECT_EQ(z.size(), 0);
+  // Points unpinned later are served by the diagonal until a new factor is adopted.
+  const std::vector<int> dofs = allDofs(*model, int(model->numControlPoints()) - 4);
+  ASSERT_TRUE(preconditioner.update(*model, 3600, 60, 1, dofs));
+  const Eigen::VectorXd r = randomVector(Eigen::Index(dofs.size()), 4);
+  preconditioner.apply(r, z);
+  ASSERT_EQ(z.size(), r.size());
+  EXPECT_TRUE(z.allFinite());
+  EXPECT_GT(z.dot(r), 0.0);
+
+  Simulator simulator(*model);
+  simulator.fixInBox(Eigen::AlignedBox3d(Eigen::Vector3d::Constant(-1), Eigen::Vector3d::Constant(4)));
+  simulator.addLoad(std::make_unique<GravityForm>(*model, Eigen::Vector3d(0, -9.81, 0)));
+  const StepReport report = simulator.step();
+  EXPECT_TRUE(report.ok) << report.message;
+  EXPECT_TRUE(simulator.positions() == model->restControl());
+}
+
 TEST(SystemPreconditioner, PaintAndPinEditsGiveTheSameBitsTwice) {
   auto run = [] {
     auto model = test::buildModel(test::block3(), 1, false);
