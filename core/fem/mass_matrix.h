@@ -10,7 +10,6 @@
 namespace sculpt {
 
 using SparseMatrix = Eigen::SparseMatrix<double>;  // column-major, symmetric use
-using RowSparseMatrix = Eigen::SparseMatrix<double, Eigen::RowMajor>;
 
 enum class MassField { Density, Damping };
 

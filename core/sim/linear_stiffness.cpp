@@ -137,6 +137,7 @@ SparseMatrix reducedLinearStiffness(const FemMesh& mesh, std::span<const LamePar
   };
 
   // T = K A: per node n, the blocks T_nj = sum_m K_nm A_mj.
+  using RowSparseMatrix = Eigen::SparseMatrix<double, Eigen::RowMajor>;
   const RowSparseMatrix rowsOfA = A;
   std::vector<size_t> tBegin(size_t(numNodes) + 1, 0);
   std::vector<uint32_t> tColumn;

@@ -194,7 +194,10 @@ Points Simulator::hessianProduct(const Points& dx, bool withInertia) {
     r.control += loadFactor_ * l.control;
     r.nodes += loadFactor_ * l.nodes;
   }
-  if (withInertia) addScalarMatrixProduct(stepMatrix_, dx, r.control);
+  if (withInertia) {
+    inertia_->addHessianProduct(state, direction, r);
+    damping_->addHessianProduct(state, direction, r);
+  }
   model_.addToControl(r.nodes, r.control);
   zeroFixed(r.control);
   return r.control;
@@ -311,11 +314,6 @@ Simulator::Attempt Simulator::implicitSubstep(double h) {
   preconditioner_->prepareFirstFactor(model_, freeDofs_);
   inertia_ = std::make_unique<InertiaForm>(model_, h);
   damping_ = std::make_unique<DampingForm>(model_, h);
-  if (stepMatrixStep_ != h || stepMatrixVersion_ != model_.massVersion()) {
-    stepMatrix_ = (1.0 / (h * h)) * model_.reducedMass() + (1.0 / h) * model_.reducedDamping();
-    stepMatrixStep_ = h;
-    stepMatrixVersion_ = model_.massVersion();
-  }
   const Points start = position_;
   Points predicted = position_ + h * velocity_;
   for (size_t i = 0; i < fixed_.size(); ++i)
@@ -457,7 +455,7 @@ StepReport Simulator::step() {
     previousStep_ = savedPreviousStep;
     energyBudget_ = savedBudget;
     lastIncrement_.resize(0, 3);
-      if (hopeless) break;  // smaller steps cannot repair non-finite inputs
+    if (hopeless) break;  // smaller steps cannot repair non-finite inputs
   }
   report.ok = false;
   if (hopeless) {

@@ -164,11 +164,6 @@ class Simulator {
   Points scratchNodes_, scratchNodeDirection_;
   Points scratchControl_;  // the control state scratchNodes_ belongs to (no rows: none)
   uint64_t freeDofsVersion_ = 0;  // counts changes of freeDofs_
-  // (1/h^2) M~ + (1/h) D~: the inertia and damping forms' Hessian in the implicit step, one
-  // product instead of two (for stepMatrixStep_ and the mass matrix version).
-  RowSparseMatrix stepMatrix_;
-  double stepMatrixStep_ = 0;
-  uint64_t stepMatrixVersion_ = ~uint64_t(0);
   // 2M~ + h D~ of the paper's scheme on the free coordinates (in freeDofs_ order), for
   // paperMatrixStep_, the mass matrix version and the free set it was built for.
   SparseMatrix paperMatrix_;

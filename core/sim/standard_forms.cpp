@@ -5,27 +5,21 @@
 namespace sculpt {
 
 Points applyScalarMatrix(const SparseMatrix& S, const Points& x) {
-  Eigen::MatrixXd columns = x;  // column-major copy for the sparse product
-  Points result = S * columns;
-  return result;
-}
-
-void addScalarMatrixProduct(const RowSparseMatrix& S, const Points& x, Points& out) {
+  // S is symmetric, so its column i is its row i: each worker sums whole rows of the result.
+  Points result(S.rows(), 3);
   parallelChunks(uint32_t(S.rows()), 256, [&](uint32_t begin, uint32_t end, unsigned) {
     for (uint32_t i = begin; i < end; ++i) {
       double sum[3] = {0, 0, 0};
-      for (RowSparseMatrix::InnerIterator it(S, Eigen::Index(i)); it; ++it) {
-        const double* row = x.row(it.col()).data();
+      for (SparseMatrix::InnerIterator it(S, Eigen::Index(i)); it; ++it) {
+        const double* row = x.row(it.row()).data();
         sum[0] += it.value() * row[0];
         sum[1] += it.value() * row[1];
         sum[2] += it.value() * row[2];
       }
-      double* target = out.row(Eigen::Index(i)).data();
-      target[0] += sum[0];
-      target[1] += sum[1];
-      target[2] += sum[2];
+      result.row(Eigen::Index(i)) << sum[0], sum[1], sum[2];
     }
   });
+  return result;
 }
 
 void ElasticForm::prepare(const FormState& x) {

@@ -78,12 +78,10 @@ class GravityForm : public Form {
   mutable uint64_t weightsVersion_ = 0;
 };
 
-/// Scalar matrix S applied to each coordinate column of an N by 3 array.
+/// Symmetric scalar matrix S (a reduced mass or damping matrix) applied to each coordinate
+/// column of an N by 3 array, rows split over the workers (those matrices couple every control
+/// point with hundreds of others).
 Points applyScalarMatrix(const SparseMatrix& S, const Points& x);
-
-/// out += S x for a scalar S acting on each coordinate column, rows split over the workers (the
-/// reduced mass matrices couple every control point with hundreds of others).
-void addScalarMatrixProduct(const RowSparseMatrix& S, const Points& x, Points& out);
 
 }  // namespace sculpt
 

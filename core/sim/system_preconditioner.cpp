@@ -27,7 +27,7 @@ struct SystemPreconditioner::Request {
   const FemMesh* mesh = nullptr;
   const SparseMatrix* A = nullptr;
   std::vector<LameParameters> lame;
-  SparseMatrix mass, damping;
+  SparseMatrix inertia;  // a M~ + b D~ (scalar; empty when a = b = 0)
   double scales[3] = {0, 0, 0};
   std::vector<int> freeDofs;
   uint64_t materialVersion = 0;
@@ -54,8 +54,7 @@ SystemPreconditioner::Request requestFor(const FemModel& model, double a, double
   request.mesh = &model.mesh();
   request.A = &model.stencilMatrix();
   request.lame = model.mesh().gaussLame;
-  if (a != 0) request.mass = model.reducedMass();
-  if (b != 0) request.damping = model.reducedDamping();
+  if (a != 0 || b != 0) request.inertia = a * model.reducedMass() + b * model.reducedDamping();
   request.scales[0] = a;
   request.scales[1] = b;
   request.scales[2] = c;
@@ -91,13 +90,9 @@ SparseMatrix restrictToFree(const SparseMatrix& S, const std::vector<int>& freeD
 // axis the cubic B-spline Gram entry at that distance is 1/2416 of the diagonal), so that S's
 // pattern, and its ordering and symbolic analysis, are known once K~lin is.
 SparseMatrix systemMatrix(const SparseMatrix& stiffness, const SystemPreconditioner::Request& request) {
-  const double a = request.scales[0], b = request.scales[1], c = request.scales[2];
-  SparseMatrix S = c * stiffness;
-  if (a == 0 && b == 0) return S;
-  // a M~ + b D~ is scalar: summed, then added to the diagonal of each 3x3 block.
-  const SparseMatrix inertia =
-      a != 0 && b != 0 ? SparseMatrix(a * request.mass + b * request.damping)
-                       : (a != 0 ? SparseMatrix(a * request.mass) : SparseMatrix(b * request.damping));
+  SparseMatrix S = request.scales[2] * stiffness;
+  const SparseMatrix& inertia = request.inertia;  // added to the diagonal of each 3x3 block
+  if (inertia.nonZeros() == 0) return S;
   for (Eigen::Index column = 0; column < S.outerSize(); ++column) {
     const Eigen::Index point = column / 3, coordinate = column % 3;
     SparseMatrix::InnerIterator m(inertia, point);
