@@ -12,7 +12,9 @@ namespace {
 
 constexpr float kHalfPi = glm::half_pi<float>();
 constexpr float kMinDistanceRadii = 1e-3f, kMaxDistanceRadii = 1e3f;
-constexpr float kFrameMargin = 1.05f;  // the framed sphere fills 1/1.05 of the smaller half-extent
+// A framed sphere spans this fraction of the view's shorter side: the model stands clear of the
+// panels and the view's edges, as Blender's View Selected leaves it.
+constexpr double kFrameFill = 0.8;
 constexpr double kClipMargin = 1.05;   // near/far keep the scene sphere grown by 5 %
 
 bool finite(float v) { return std::isfinite(v); }
@@ -141,7 +143,12 @@ void Camera::frame(const glm::vec3& centre, float radius, float aspect) {
   // vertical and horizontal half fields of view.
   const double halfY = 0.5 * static_cast<double>(fovY_);
   const double halfX = std::atan(static_cast<double>(aspect) * std::tan(halfY));
-  const double d = kFrameMargin * radius / std::sin(std::min(halfX, halfY));
+  // In perspective the sphere's outline subtends asin(r / d), whose tangent must be kFrameFill
+  // times the tangent of the tighter half field of view; in orthographic r itself is that
+  // fraction of the tighter half extent, d tan(half field).
+  const double tanHalf = std::tan(std::min(halfX, halfY));
+  const double d = orthographic_ ? radius / (kFrameFill * tanHalf)
+                                 : radius / std::sin(std::atan(kFrameFill * tanHalf));
   setDistance(static_cast<float>(d));
 }
 

@@ -52,10 +52,10 @@ class Camera {
   /// distance *= factor, clamped to [1e-3, 1e3] scene radii. factor < 1 zooms in.
   /// Throws std::invalid_argument unless factor is positive and finite.
   void zoom(float factor);
-  /// Pivot = centre and the distance at which a sphere of this radius fits the view of this
-  /// aspect in both directions (with a 5 % margin) in perspective; the same distance is used in
-  /// orthographic, where the sphere then fits too. Also sets the scene sphere. Orientation and
-  /// projection mode are kept. Throws std::invalid_argument for a non-positive radius or aspect.
+  /// Pivot = centre and the distance at which a sphere of this radius spans 80 % of the view's
+  /// shorter side (of a view of this aspect), in the current projection. Also sets the scene
+  /// sphere. Orientation and projection mode are kept. Throws std::invalid_argument for a
+  /// non-positive radius or aspect.
   void frame(const glm::vec3& centre, float radius, float aspect);
   /// The sphere that near/far planes must keep visible (e.g. the model's bounds as it deforms).
   void setSceneBounds(const glm::vec3& centre, float radius);

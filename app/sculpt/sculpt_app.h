@@ -70,6 +70,7 @@ class SculptApp {
   AppModel& model() { return model_; }
   const Document& document() const { return document_; }
   const render::Camera& camera() const { return camera_; }
+  render::Camera& camera() { return camera_; }  ///< to place the view (tests, scripts)
   ViewRect viewRect() const { return lastView_; }
   const SceneView& sceneView() const { return view_; }
   StylusDevice& stylus() { return stylus_; }
