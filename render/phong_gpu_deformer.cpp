@@ -92,6 +92,9 @@ PhongGpuDeformer::PhongGpuDeformer(const VolumeMesh& rest, std::span<const uint3
   const std::vector<float> zeros(std::max<size_t>(numCells_, 1), 0.0f);
   makeBufferTexture(cellFieldBuffer_, cellFieldTexture_, GL_R32F, zeros.data(),
                     zeros.size() * sizeof(float), GL_DYNAMIC_DRAW);
+  const std::vector<float> nodeZeros(std::max<uint32_t>(rest.numNodes(), 1), 0.0f);
+  makeBufferTexture(nodeFieldBuffer_, nodeFieldTexture_, GL_R32F, nodeZeros.data(),
+                    nodeZeros.size() * sizeof(float), GL_DYNAMIC_DRAW);
   const int32_t noNode = 0;
   makeBufferTexture(attributeNodesBuffer_, attributeNodesTexture_, GL_R32I, &noNode,
                     sizeof noNode, GL_STATIC_DRAW);
@@ -165,12 +168,13 @@ PhongGpuDeformer::~PhongGpuDeformer() {
                             restNodesBuffer_,       frameBuffer_,
                             feedbackBuffer_,       indexBuffer_,           neighbourRangeBuffer_,
                             attributeNodesBuffer_, attributeWeightsBuffer_, cellFieldBuffer_,
-                            restPointBuffer_,      inverseJacobianBuffer_, vertexNodesBuffer_};
+                            restPointBuffer_,      inverseJacobianBuffer_, vertexNodesBuffer_,
+                            nodeFieldBuffer_};
   glDeleteBuffers(static_cast<GLsizei>(std::size(buffers)), buffers);
   const GLuint textures[] = {restNodesTexture_,      frameTexture_,
                              attributeNodesTexture_,  attributeWeightsTexture_,
                              cellFieldTexture_,       cellTexture_,
-                             neighbourRangeTexture_};
+                             neighbourRangeTexture_,  nodeFieldTexture_};
   glDeleteTextures(static_cast<GLsizei>(std::size(textures)), textures);
   glDeleteVertexArrays(1, &vao_);
   glDeleteVertexArrays(1, &drawVao_);
@@ -240,15 +244,26 @@ void PhongGpuDeformer::setCellField(std::span<const float> values) {
   feedbackCurrent_ = false;
 }
 
+void PhongGpuDeformer::setNodeField(std::span<const float> values) {
+  if (values.size() != static_cast<size_t>(restNodes_.rows()))
+    throw std::invalid_argument("PhongGpuDeformer: " + std::to_string(values.size()) +
+                                " node field values for " + std::to_string(restNodes_.rows()) +
+                                " nodes");
+  if (values.empty()) return;
+  uploadBuffer(nodeFieldBuffer_, values.data(), values.size_bytes(), GL_DYNAMIC_DRAW);
+  feedbackCurrent_ = false;
+}
+
 void PhongGpuDeformer::bindFrameTextures(const ShaderProgram& program) const {
   program.use();
   const GLuint textures[] = {restNodesTexture_,       frameTexture_,     cellTexture_,
                              neighbourRangeTexture_,   attributeNodesTexture_,
-                             attributeWeightsTexture_, cellFieldTexture_};
+                             attributeWeightsTexture_, cellFieldTexture_, nodeFieldTexture_};
   const char* samplers[] = {"restNodes",       "frameNodes",     "vertexCells",
                             "neighbourRanges", "attributeNodes", "attributeWeights",
-                            "cellField"};
-  for (int unit = 0; unit < 7; ++unit) {
+                            "cellField",       "nodeField"};
+  static_assert(std::size(textures) == std::size(samplers));
+  for (int unit = 0; unit < static_cast<int>(std::size(textures)); ++unit) {
     glActiveTexture(static_cast<GLenum>(GL_TEXTURE0 + unit));
     glBindTexture(GL_TEXTURE_BUFFER, textures[unit]);
     glUniform1i(program.uniform(samplers[unit]), unit);
@@ -316,14 +331,26 @@ void PhongGpuDeformer::draw(const glm::mat4& modelView, const glm::mat4& project
   if (style.clip) glDisable(GL_CLIP_DISTANCE0);
 }
 
-void PhongGpuDeformer::capture(std::vector<float>& positions, std::vector<float>& normals) const {
-  deform(feedbackCurrent_ ? feedbackField_ : SurfaceField::None);
+std::vector<float> PhongGpuDeformer::readFeedback() const {
   std::vector<float> interleaved(kFeedbackFloats * static_cast<size_t>(numVertices_));
   glBindBuffer(GL_TRANSFORM_FEEDBACK_BUFFER, feedbackBuffer_);
   glGetBufferSubData(GL_TRANSFORM_FEEDBACK_BUFFER, 0,
                      static_cast<GLsizeiptr>(interleaved.size() * sizeof(float)),
                      interleaved.data());
   glBindBuffer(GL_TRANSFORM_FEEDBACK_BUFFER, 0);
+  return interleaved;
+}
+
+void PhongGpuDeformer::captureField(SurfaceField field, std::vector<float>& values) const {
+  deform(field);
+  const std::vector<float> interleaved = readFeedback();
+  values.resize(numVertices_);
+  for (uint32_t v = 0; v < numVertices_; ++v) values[v] = interleaved[kFeedbackFloats * v + 6];
+}
+
+void PhongGpuDeformer::capture(std::vector<float>& positions, std::vector<float>& normals) const {
+  deform(feedbackCurrent_ ? feedbackField_ : SurfaceField::None);
+  const std::vector<float> interleaved = readFeedback();
   positions.resize(3 * static_cast<size_t>(numVertices_));
   normals.resize(3 * static_cast<size_t>(numVertices_));
   for (uint32_t v = 0; v < numVertices_; ++v)

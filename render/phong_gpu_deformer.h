@@ -25,8 +25,9 @@
 
 namespace sculpt::render {
 
-/// A scalar shown on the surface through the colour map.
-enum class SurfaceField { None = 0, PerCell = 1, Displacement = 2 };
+/// A scalar shown on the surface through the colour map: flat per cell, the displacement length,
+/// or node values interpolated over each cell like the position (smooth across cells).
+enum class SurfaceField { None = 0, PerCell = 1, Displacement = 2, PerNode = 3 };
 
 /// How draw() shades the deformed surface.
 struct SurfaceStyle {
@@ -60,11 +61,15 @@ class PhongGpuDeformer {
   bool hasAttributeNeighbours() const { return hasAttribute_; }
   /// One value per cell for SurfaceField::PerCell (O(cells)).
   void setCellField(std::span<const float> values);
+  /// One value per node for SurfaceField::PerNode (O(nodes)), e.g. from nodeFieldFromCells.
+  void setNodeField(std::span<const float> values);
   /// Bytes sent by the last setFrame (the per-frame upload).
   size_t frameUploadBytes() const { return frameUploadBytes_; }
   /// Runs the vertex shader over all vertices with transform feedback: 3 position and 3 normal
   /// floats per vertex.
   void capture(std::vector<float>& positions, std::vector<float>& normals) const;
+  /// The same pass with `field`: the field value per vertex that draw() colours.
+  void captureField(SurfaceField field, std::vector<float>& values) const;
   /// Triangle indices (3 per triangle) of the embedded surface, uploaded once.
   void setTriangles(std::span<const uint32_t> indices);
   /// Draws the deformed surface (the vertex shader deforms, the fragment shader lights).
@@ -75,6 +80,8 @@ class PhongGpuDeformer {
   void bindFrameTextures(const ShaderProgram& program) const;
   /// Runs the deformation pass into feedbackBuffer_ unless it holds this frame with this field.
   void deform(SurfaceField field) const;
+  /// The feedback buffer: per vertex its position, normal and field value (7 floats).
+  std::vector<float> readFeedback() const;
   void drawTriangles(const glm::mat4& modelView, const glm::mat4& projection) const;
 
   ShaderProgram program_;      ///< the deformation pass (transform feedback)
@@ -92,6 +99,7 @@ class PhongGpuDeformer {
   GLuint attributeNodesBuffer_ = 0, attributeNodesTexture_ = 0;
   GLuint attributeWeightsBuffer_ = 0, attributeWeightsTexture_ = 0;
   GLuint cellFieldBuffer_ = 0, cellFieldTexture_ = 0;
+  GLuint nodeFieldBuffer_ = 0, nodeFieldTexture_ = 0;
   uint32_t numVertices_ = 0, numCells_ = 0;
   Eigen::Matrix<double, Eigen::Dynamic, 3, Eigen::RowMajor> restNodes_;
   float alpha_ = 0.5f;

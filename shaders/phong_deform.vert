@@ -28,8 +28,9 @@ uniform isamplerBuffer neighbourRanges;   // per vertex: attribute neighbours (f
 uniform bool attributeMethod;
 uniform isamplerBuffer attributeNodes;    // attribute method: neighbour node ids
 uniform samplerBuffer attributeWeights;   // and their normalised weights
-uniform int fieldMode;                    // 0 none, 1 per cell (cellField), 2 displacement length
+uniform int fieldMode;  // 0 none, 1 per cell (cellField), 2 displacement length, 3 per node
 uniform samplerBuffer cellField;
+uniform samplerBuffer nodeField;  // per node, interpolated as the position is (embed/node_field.h)
 
 out vec3 deformedPosition;  // world space, captured by transform feedback
 out vec3 deformedNormal;
@@ -102,7 +103,13 @@ void main() {
     }
   }
   deformedPosition = position;
-  fieldValue = fieldMode == 1 ? texelFetch(cellField, texelFetch(vertexCells, gl_VertexID).r).r
-                              : (fieldMode == 2 ? length(position - X) : 0.0);
+  fieldValue = 0.0;
+  if (fieldMode == 1) {
+    fieldValue = texelFetch(cellField, texelFetch(vertexCells, gl_VertexID).r).r;
+  } else if (fieldMode == 2) {
+    fieldValue = length(position - X);
+  } else if (fieldMode == 3) {
+    for (int a = 0; a < count; ++a) fieldValue += beta[a] * texelFetch(nodeField, nodes[a]).r;
+  }
   gl_Position = vec4(position, 1.0);  // unused: the pass runs with rasterizer discard
 }

@@ -24,6 +24,9 @@ struct DisplaySettings {
   InterpolationMethod method = InterpolationMethod::Phong;
   GradientScheme gradients = kDefaultGradientScheme;  ///< node gradients of phong and vertex
   FieldKind field = FieldKind::None;
+  /// Cell fields (materials, strain energy) drawn smoothly from node values (embed/node_field.h);
+  /// false: flat per level-K cell, to inspect the cells.
+  bool smoothField = true;
   bool autoRange = true;  ///< the colour map spans the field's current minimum and maximum
   float rangeLow = 0.0f, rangeHigh = 1.0f;
   bool showSurface = true, flatShading = false, wireframe = false;
@@ -31,6 +34,7 @@ struct DisplaySettings {
   bool clip = false;           ///< clipping plane through the volume
   int clipAxis = 0;            ///< normal along x, y or z
   float clipPosition = 0.5f;   ///< along the axis, as a fraction of the rest bounding box
+  bool operator==(const DisplaySettings&) const = default;
 };
 
 }  // namespace sculpt::app

@@ -20,6 +20,8 @@ const char* const kUsage =
     "  --method M             phong | linear | vertex | attribute\n"
     "  --gradients G          fit | average: node gradients of phong and vertex (default fit)\n"
     "  --field F              none | youngs | density | displacement | strain | damping\n"
+    "  --field-per-cell       show a cell field flat per level-K cell (default: smooth, from\n"
+    "                         the node values)\n"
     "  --clip x|y|z           clipping plane through the middle of the solid\n"
     "  --wireframe --flat --show-cells --show-control --no-grid\n"
     "  --preset blender|stylus  mouse navigation preset (default blender)\n"
@@ -113,6 +115,8 @@ Options parseOptions(int argc, char** argv, bool* helpShown) {
         throw std::invalid_argument(
             "--field must be none, youngs, density, displacement, strain or damping (got '" + name + "')");
       options.display.field = *field;
+    } else if (arg == "--field-per-cell") {
+      options.display.smoothField = false;
     } else if (arg == "--clip") {
       const std::string axis = value();
       if (axis != "x" && axis != "y" && axis != "z")

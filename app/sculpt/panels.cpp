@@ -296,6 +296,17 @@ void displayPanel(AppModel& m) {
   int field = static_cast<int>(d.field);
   if (ImGui::Combo("Field", &field, "None\0Young's modulus\0Density\0Displacement\0Strain energy\0Damping\0"))
     d.field = static_cast<FieldKind>(field);
+  if (d.field != FieldKind::None && d.field != FieldKind::Displacement) {
+    // The cell fields: smooth through node values, or flat per level-K cell.
+    int perCell = d.smoothField ? 0 : 1;
+    ImGui::RadioButton("Smooth", &perCell, 0);
+    ImGui::SameLine();
+    ImGui::RadioButton("Per cell", &perCell, 1);
+    if (ImGui::IsItemHovered())
+      ImGui::SetTooltip("Each level-K cell in one flat colour, its element's mean: to inspect\n"
+                        "the cells. Smooth interpolates node values, the cells' volume-weighted means.");
+    d.smoothField = perCell == 0;
+  }
   if (d.field != FieldKind::None) {
     ImGui::Checkbox("Automatic range", &d.autoRange);
     if (!d.autoRange) {

@@ -6,6 +6,7 @@
 
 #include "embed/attribute_transfer.h"
 #include "embed/embedded_deformer.h"
+#include "embed/node_field.h"
 #include "mesh/plane_slice.h"
 #include "render/overlay_geometry.h"
 
@@ -46,6 +47,8 @@ void SceneView::setGeometry(std::shared_ptr<const SceneGeometry> geometry) {
   deformer_ = std::make_unique<render::PhongGpuDeformer>(g.cellMesh, g.embedding.cells, local,
                                                          floats(g.restNormals));
   deformer_->setTriangles(g.triangles);
+  nodeFieldWeights_ = nodeFieldWeights(g.cellMesh);
+  nodeFieldCurrent_ = false;
 
   const Eigen::Vector3d lo = g.restPositions.colwise().minCoeff().transpose();
   const Eigen::Vector3d hi = g.restPositions.colwise().maxCoeff().transpose();
@@ -107,10 +110,30 @@ void SceneView::setFrame(const SceneFrame& frame, const DisplaySettings& display
 
 void SceneView::upload(const DisplaySettings& display) {
   uploadDeformation(display);
-  if (const std::vector<float>* values = cellField(frame_, display.field);
-      values && values->size() == geometry_->cellMesh.numCells())
-    deformer_->setCellField(*values);
+  uploadField(display);
+}
+
+void SceneView::uploadField(const DisplaySettings& display) {
   uploadedField_ = display.field;
+  uploadedSmooth_ = display.smoothField;
+  showsNodeField_ = false;
+  const std::vector<float>* values = cellField(frame_, display.field);
+  if (!values || values->size() != geometry_->cellMesh.numCells()) return;
+  if (!display.smoothField) {
+    deformer_->setCellField(*values);
+    return;
+  }
+  showsNodeField_ = true;
+  // Node values again only when the cell values changed: painted materials stay the same for
+  // many frames, the strain energy changes with every step (O(cells) either way).
+  if (nodeFieldCurrent_ && *values == nodeFieldSource_) return;
+  const auto start = std::chrono::steady_clock::now();
+  nodeFieldFromCells(nodeFieldWeights_, *values, nodeField_);
+  lastNodeFieldMs_ =
+      std::chrono::duration<double, std::milli>(std::chrono::steady_clock::now() - start).count();
+  nodeFieldSource_ = *values;
+  nodeFieldCurrent_ = true;
+  deformer_->setNodeField(nodeField_);
 }
 
 FieldRange SceneView::fieldRange(FieldKind field) const {
@@ -149,7 +172,7 @@ void SceneView::draw(const glm::mat4& view, const glm::mat4& projection,
   if (!geometry_) return;
   const SceneGeometry& g = *geometry_;
   if (display.method != uploadedMethod_ || display.gradients != uploadedGradients_ ||
-      display.field != uploadedField_)
+      display.field != uploadedField_ || display.smoothField != uploadedSmooth_)
     upload(display);
   if (display.showGrid) grid_.draw(view, projection, 1.0f);
   if (display.showAxes) axes_.draw(view, projection, 1.0f);
@@ -161,6 +184,7 @@ void SceneView::draw(const glm::mat4& view, const glm::mat4& projection,
     style.wireframe = display.wireframe;
     style.field = display.field == FieldKind::None ? render::SurfaceField::None
                   : display.field == FieldKind::Displacement ? render::SurfaceField::Displacement
+                  : showsNodeField_                          ? render::SurfaceField::PerNode
                                                              : render::SurfaceField::PerCell;
     style.fieldLow = range.low, style.fieldHigh = range.high;
     style.clip = display.clip;
@@ -168,11 +192,15 @@ void SceneView::draw(const glm::mat4& view, const glm::mat4& projection,
     deformer_->draw(view, projection, style);
   }
   if (display.clip) {
-    // The cut through the deformed level-K cells, coloured by the field.
+    // The cut through the deformed level-K cells, coloured by the field: smooth from the node
+    // values as the surface is, or flat per cell.
     const Eigen::Vector3d normal(plane.x, plane.y, plane.z);
+    const bool smooth = showsNodeField_;
     const std::vector<double> nodeValues =
-        display.field == FieldKind::Displacement ? displacements_ : std::vector<double>{};
-    const std::vector<double> perCell = cellValues(display.field);
+        display.field == FieldKind::Displacement ? displacements_
+        : smooth ? std::vector<double>(nodeField_.begin(), nodeField_.end())
+                 : std::vector<double>{};
+    const std::vector<double> perCell = smooth ? std::vector<double>{} : cellValues(display.field);
     const PlaneSlice slice = slicePlane(g.cellMesh, frame_.nodes, normal, plane.w, nodeValues, perCell);
     slice_.setSlice(slice);
     slice_.draw(view, projection, range.low, range.high);

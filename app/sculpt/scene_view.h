@@ -10,6 +10,7 @@
 
 #include <glm/glm.hpp>
 
+#include "embed/node_field.h"
 #include "render/line_renderer.h"
 #include "render/overlay_geometry.h"
 #include "render/phong_gpu_deformer.h"
@@ -51,6 +52,10 @@ class SceneView {
   /// Bytes uploaded for the deformation by the last setFrame (node positions and gradients).
   size_t lastUploadBytes() const { return deformer_ ? deformer_->frameUploadBytes() : 0; }
   double lastUploadMs() const { return lastUploadMs_; }
+  /// Wall time of the last reconstruction of node values from a cell field (smooth fields).
+  double lastNodeFieldMs() const { return lastNodeFieldMs_; }
+  /// The node values of the cell field last shown smoothly (embed/node_field.h).
+  const std::vector<float>& nodeField() const { return nodeField_; }
   /// Triangles of the embedded surface.
   size_t numTriangles() const { return geometry_ ? geometry_->triangles.size() / 3 : 0; }
   /// The deformer, for measurements (draw ratio) and tests.
@@ -63,6 +68,8 @@ class SceneView {
   std::vector<double> cellValues(FieldKind field) const;
   /// Uploads what `display` needs of the current frame (method, cell field).
   void upload(const DisplaySettings& display);
+  /// The field shown: per cell, or per node from the cells when `display` draws it smoothly.
+  void uploadField(const DisplaySettings& display);
 
   std::shared_ptr<const SceneGeometry> geometry_;
   SceneFrame frame_;
@@ -76,6 +83,13 @@ class SceneView {
   /// The frame's node gradients by the displayed scheme, where it is not the frame's own.
   std::vector<Eigen::Matrix3d> schemeGradients_;
   FieldKind uploadedField_ = FieldKind::None;
+  bool uploadedSmooth_ = true;
+  /// Cell field -> node values (per geometry), the last values reconstructed and their source.
+  CompressedRows<NodeFieldWeight> nodeFieldWeights_;
+  std::vector<float> nodeField_, nodeFieldSource_;
+  bool nodeFieldCurrent_ = false;  ///< the deformer holds nodeField_
+  bool showsNodeField_ = false;    ///< nodeField_ is the field shown (smooth)
+  double lastNodeFieldMs_ = 0.0;
   glm::vec3 centre_{0.0f}, boxLow_{0.0f}, boxHigh_{0.0f};
   float radius_ = 1.0f;
   double lastUploadMs_ = 0.0;
