@@ -35,8 +35,14 @@ void drawColourBar(FieldKind field, FieldRange range, ImVec2 viewMin, ImVec2 vie
   const ImVec2 padding = ImGui::GetStyle().WindowPadding;
   const float contentWidth =
       std::max(ImGui::CalcTextSize(title.c_str()).x, barSize.x + 6.0f * scale + labelWidth);
+  // The end labels are centred on the bar's ends, so half a line sticks out above and below it:
+  // the bar starts a line below the title (the top label clears it) and the window ends half a
+  // line below the bar.
+  const float lineHeight = ImGui::GetTextLineHeight();
+  const float titleGap = 0.5f * lineHeight + 4.0f * scale;
   const ImVec2 windowSize(contentWidth + 2.0f * padding.x,
-                          barSize.y + ImGui::GetFrameHeight() + 2.0f * padding.y + 8.0f * scale);
+                          lineHeight + titleGap + barSize.y + 0.5f * lineHeight + 2.0f * padding.y +
+                              2.0f * scale);
   ImGui::SetNextWindowPos(ImVec2(viewMax.x - windowSize.x - 12.0f * scale,
                                  viewMax.y - windowSize.y - 12.0f * scale));
   ImGui::SetNextWindowSize(windowSize);
@@ -47,7 +53,8 @@ void drawColourBar(FieldKind field, FieldRange range, ImVec2 viewMin, ImVec2 vie
                    ImGuiWindowFlags_NoNav);
   ImGui::TextUnformatted(title.c_str());
   ImDrawList* draw = ImGui::GetWindowDrawList();
-  const ImVec2 top = ImGui::GetCursorScreenPos();
+  const ImVec2 below = ImGui::GetCursorScreenPos();
+  const ImVec2 top(below.x, ImGui::GetItemRectMax().y + titleGap);
   // High values at the top: the bar is drawn in slices, each a vertical gradient.
   constexpr int kSlices = 32;
   for (int k = 0; k < kSlices; ++k) {
@@ -62,11 +69,11 @@ void drawColourBar(FieldKind field, FieldRange range, ImVec2 viewMin, ImVec2 vie
   }
   draw->AddRect(top, ImVec2(top.x + barSize.x, top.y + barSize.y), IM_COL32(230, 230, 230, 200));
   const float labelX = top.x + barSize.x + 6.0f * scale;
-  const float lineHeight = ImGui::GetTextLineHeight();
   for (int k = 0; k < 3; ++k) {
     const float y = top.y + barSize.y * 0.5f * static_cast<float>(k) - 0.5f * lineHeight;
     draw->AddText(ImVec2(labelX, y), IM_COL32(235, 235, 235, 255), labels[k].c_str());
   }
+  ImGui::SetCursorScreenPos(top);
   ImGui::Dummy(barSize);
   ImGui::End();
 }

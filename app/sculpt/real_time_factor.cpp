@@ -1,0 +1,22 @@
+#include "sculpt/real_time_factor.h"
+
+#include <cmath>
+#include <cstdio>
+
+namespace sculpt::app {
+
+std::optional<double> realTimeFactor(double simulatedAtStart, double simulatedAtEnd,
+                                     double wallSeconds) {
+  const double advanced = simulatedAtEnd - simulatedAtStart;
+  if (!(wallSeconds > 0.0) || !std::isfinite(advanced) || advanced < 0.0) return std::nullopt;
+  return advanced / wallSeconds;
+}
+
+std::string realTimeLabel(double factor) {
+  // Two significant digits: enough to tell 0.28x from 0.3x, and the strip does not jitter.
+  char text[48];
+  std::snprintf(text, sizeof text, "%.2gx real time", factor);
+  return text;
+}
+
+}  // namespace sculpt::app
