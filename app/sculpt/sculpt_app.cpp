@@ -65,6 +65,7 @@ SculptApp::SculptApp(GLFWwindow* window, const Options& options, Clock::time_poi
     if (!problems.empty()) model_.toast("preferences key map: " + problems, true, 8.0);
   }
   model_.recentScenes = preferences_.recentFiles;
+  restoreBrushRadii(model_.tools, preferences_.brushRadii);  // a project opened later has its own
   model_.display = options.display;
   model_.preset = navigator_.preset();
   applyCommandLineSettings();
@@ -283,12 +284,16 @@ void SculptApp::runAction(Action action) {
     case Action::Save: r.save = true; break;
     case Action::SaveAs: model_.openSaveAsDialog = true; break;
     case Action::Open: model_.openOpenDialog = true; break;
-    case Action::BrushSmaller:
-      model_.tools.radiusPixels = std::max(2.0f, model_.tools.radiusPixels / 1.25f);
+    case Action::BrushSmaller: {
+      float& radius = model_.tools.brush().radiusPixels;
+      radius = std::max(kMinBrushRadiusPixels, radius / 1.25f);
       break;
-    case Action::BrushLarger:
-      model_.tools.radiusPixels = std::min(1000.0f, model_.tools.radiusPixels * 1.25f);
+    }
+    case Action::BrushLarger: {
+      float& radius = model_.tools.brush().radiusPixels;
+      radius = std::min(kMaxBrushRadiusPixels, radius * 1.25f);
       break;
+    }
     default: applyCameraAction(action, camera_); break;
   }
 }
@@ -557,6 +562,7 @@ void SculptApp::savePreferencesOnClose() {
     preferences_.window.x = x, preferences_.window.y = y;
     glfwGetWindowSize(window_, &preferences_.window.width, &preferences_.window.height);
   }
+  preferences_.brushRadii = brushRadii(model_.tools);
   try {
     savePreferences(preferences_, preferencesFile_);
   } catch (const std::exception& error) {  // never lose the session over preferences

@@ -1,6 +1,7 @@
 // SculptApp: the tools in the 3D view (tool_state.h): picking on the deformed surface and on the
 // control mesh, the strokes of each tool, F / Shift+F brush dragging, and what is drawn over the
-// view for them (brush circle with its falloff ring, mirror plane, curve, faces).
+// view for them: each tool's cursor (brush circle with its falloff ring; pull's grab point and
+// depth ring; curve's point), the mirror planes, the curve, the faces.
 
 #include <algorithm>
 #include <cmath>
@@ -15,6 +16,15 @@ namespace sculpt::app {
 namespace {
 
 ImU32 colour(int r, int g, int b, int a = 255) { return IM_COL32(r, g, b, a); }
+
+// The pull cursor in the pull spring's colour (scene_view.cpp), the curve's cursor in the curve's.
+const ImU32 kPullColour = colour(255, 89, 51);
+const ImU32 kCurveColour = colour(80, 220, 255);
+// A faint dark edge under the cursors' strokes, so that they show on light surfaces too.
+const ImU32 kCursorShadow = colour(0, 0, 0, 90);
+// The pull cursor's ring: a disc of this fraction of the scene's radius in the view plane at the
+// grabbed depth, so that its size on screen tells how deep the grab is.
+constexpr float kPullRingFraction = 0.04f;
 
 // Where the falloff weight is 1/2 (the inner ring), as a fraction of the radius.
 float halfWeightFraction(Falloff falloff) {
@@ -83,7 +93,7 @@ std::optional<SculptApp::SurfaceHit> SculptApp::surfaceHit(float x, float y, flo
 double SculptApp::brushWorldRadius(float x, float y, float depth, int width, int height) const {
   const std::optional<glm::vec3> a = camera_.unproject(x, y, depth, width, height);
   const std::optional<glm::vec3> b =
-      camera_.unproject(x + model_.tools.radiusPixels, y, depth, width, height);
+      camera_.unproject(x + model_.tools.brush(strokeTool_).radiusPixels, y, depth, width, height);
   return a && b ? glm::distance(*a, *b) : 0.0;
 }
 
@@ -208,7 +218,7 @@ void SculptApp::brushStroke(const PointerResult& stroke, float x, float y, int w
     const double now = recording_->takeTime();
     if (strokeTool_ == ToolKind::Inflate) {
       const double pressure = t.pressureFraction * model_.settings.material.youngs;
-      const InflateStroke::Settings settings{radius, pressure * t.strength};
+      const InflateStroke::Settings settings{radius, pressure * t.brush(ToolKind::Inflate).strength};
       tool = std::make_unique<InflateStroke>(settings);
       if (capture)
         capture->beginInflate(now, hit->rest, settings,
@@ -468,10 +478,12 @@ bool SculptApp::brushKeys(const ImGuiIO& io, float dx) {
   }
   if (dx != 0.0f) {
     brushKeyDragged_ = true;
+    const BrushRef brush = t.brush();
     if (brushKeyStrength_)
-      t.strength = std::clamp(t.strength + dx / 300.0f, 0.0f, 1.0f);
+      brush.strength = std::clamp(brush.strength + dx / 300.0f, 0.0f, 1.0f);
     else
-      t.radiusPixels = std::clamp(t.radiusPixels + dx, 2.0f, 1000.0f);
+      brush.radiusPixels =
+          std::clamp(brush.radiusPixels + dx, kMinBrushRadiusPixels, kMaxBrushRadiusPixels);
   }
   return true;
 }
@@ -492,22 +504,23 @@ void SculptApp::drawToolOverlay(const ViewRect& view) {
     return ImVec2(view.min.x + p.x, view.min.y + p.y);
   };
   const ToolState& t = model_.tools;
+  const BrushSettings brush = t.brush();
   const ImVec2 mouse = ImGui::GetIO().MousePos;
   const bool inView = mouse.x >= view.min.x && mouse.y >= view.min.y && mouse.x < view.max.x &&
                       mouse.y < view.max.y && !ImGui::GetIO().WantCaptureMouse;
-  if (isBrushTool(t.tool) && (inView || brushKey_ >= 0)) {
-    const ImVec2 centre = brushKey_ >= 0 ? ImVec2(lastDabX_ + view.min.x, lastDabY_ + view.min.y) : mouse;
-    const ImU32 ring = t.tool == ToolKind::Pin ? colour(255, 90, 80) : colour(255, 255, 255, 220);
-    draw->AddCircle(centre, t.radiusPixels, ring, 48, 1.5f);
-    if (t.tool != ToolKind::Pin && t.falloff != Falloff::Constant)
-      draw->AddCircle(centre, t.radiusPixels * halfWeightFraction(t.falloff),
-                      colour(255, 255, 255, 110), 48, 1.0f);
-    if (brushKey_ >= 0) {
-      char text[48];
-      std::snprintf(text, sizeof text, brushKeyStrength_ ? "strength %.2f" : "radius %.0f px",
-                    brushKeyStrength_ ? t.strength : t.radiusPixels);
-      draw->AddText(ImVec2(centre.x + t.radiusPixels + 6, centre.y), colour(255, 255, 255), text);
-    }
+  // The surface point under the cursor, from the depth read in the last frame; the ground grid
+  // writes depth too, but lies outside the box of the control points (the solid lies inside
+  // their hull).
+  std::optional<glm::vec3> hovered =
+      inView && cursorDepth_ < 1.0f
+          ? camera_.unproject(mouse.x - view.min.x, mouse.y - view.min.y, cursorDepth_, width, height)
+          : std::nullopt;
+  if (const Points& control = view_.frame().control; hovered && control.rows() > 0) {
+    const Eigen::Vector3d slack = Eigen::Vector3d::Constant(0.01 * view_.radius());
+    const Eigen::Vector3d lo = control.colwise().minCoeff().transpose() - slack;
+    const Eigen::Vector3d hi = control.colwise().maxCoeff().transpose() + slack;
+    const Eigen::Vector3d p = toEigen(*hovered);
+    if ((p.array() < lo.array()).any() || (p.array() > hi.array()).any()) hovered.reset();
   }
   if ((t.tool == ToolKind::Paint || (t.tool == ToolKind::Topology && !needsTwoFaces(t.operation))) &&
       (t.mirrorX || t.mirrorY || t.mirrorZ)) {
@@ -530,6 +543,44 @@ void SculptApp::drawToolOverlay(const ViewRect& view) {
       draw->AddQuad(corners[0], corners[1], corners[2], corners[3], colour(230, 60, 60, 160), 1.5f);
     }
   }
+  // The cursors, over the planes.
+  if (isBrushTool(t.tool) && (inView || brushKey_ >= 0)) {
+    const ImVec2 centre = brushKey_ >= 0 ? ImVec2(lastDabX_ + view.min.x, lastDabY_ + view.min.y) : mouse;
+    const ImU32 ring = t.tool == ToolKind::Pin ? colour(255, 90, 80) : colour(255, 255, 255, 220);
+    draw->AddCircle(centre, brush.radiusPixels, kCursorShadow, 48, 3.5f);  // shows on light surfaces
+    draw->AddCircle(centre, brush.radiusPixels, ring, 48, 1.5f);
+    if (t.tool != ToolKind::Pin && brush.falloff != Falloff::Constant)
+      draw->AddCircle(centre, brush.radiusPixels * halfWeightFraction(brush.falloff),
+                      colour(255, 255, 255, 110), 48, 1.0f);
+    if (brushKey_ >= 0) {
+      char text[48];
+      if (brushKeyStrength_)
+        std::snprintf(text, sizeof text, "strength %.2f", brush.strength);
+      else
+        std::snprintf(text, sizeof text, t.unifiedRadius ? "radius %.0f px (unified)" : "radius %.0f px",
+                      brush.radiusPixels);
+      draw->AddText(ImVec2(centre.x + brush.radiusPixels + 6, centre.y), colour(255, 255, 255), text);
+    }
+  }
+  const bool pulling = stroke_ != 0 && strokeTool_ == ToolKind::Pull;  // its spring is drawn
+  if (t.tool == ToolKind::Pull && hovered && !pulling) {
+    // Where a drag grabs, and a ring of a fixed size in the plane the grabbed point will move in.
+    const ImVec2 centre = screen(*hovered);
+    const ImVec2 edge = screen(*hovered + kPullRingFraction * view_.radius() * camera_.right());
+    const float ring = std::clamp(std::hypot(edge.x - centre.x, edge.y - centre.y), 5.0f, 80.0f);
+    draw->AddCircle(centre, ring, kCursorShadow, 40, 4.0f);
+    draw->AddCircle(centre, ring, kPullColour, 40, 2.0f);
+    draw->AddCircleFilled(centre, 4.5f, kCursorShadow, 16);
+    draw->AddCircleFilled(centre, 3.5f, kPullColour, 16);
+  }
+  if (t.tool == ToolKind::Curve && hovered && !curveGrabbed_) {
+    // Where the curve's next point goes (or, with Shift, where a drag of the curve starts).
+    const ImVec2 centre = screen(*hovered);
+    draw->AddCircle(centre, 8.0f, kCursorShadow, 24, 3.5f);
+    draw->AddCircle(centre, 8.0f, kCurveColour, 24, 1.5f);
+    draw->AddCircleFilled(centre, 4.0f, kCursorShadow, 12);
+    draw->AddCircleFilled(centre, 3.0f, kCurveColour, 12);
+  }
   // The force of each pull spring, at its target.
   const SceneFrame& frame = view_.frame();
   for (const ToolSpring& spring : frame.springs) {
@@ -548,7 +599,7 @@ void SculptApp::drawToolOverlay(const ViewRect& view) {
   if (!curveWorld_.empty() && t.tool == ToolKind::Curve) {
     std::vector<ImVec2> points;
     for (const glm::vec3& p : curveWorld_) points.push_back(screen(p));
-    draw->AddPolyline(points.data(), static_cast<int>(points.size()), colour(80, 220, 255), 0, 3.0f);
+    draw->AddPolyline(points.data(), static_cast<int>(points.size()), kCurveColour, 0, 3.0f);
   }
   if (t.tool == ToolKind::Topology) {
     const Points& control = view_.frame().control;
@@ -560,7 +611,7 @@ void SculptApp::drawToolOverlay(const ViewRect& view) {
       draw->AddConvexPolyFilled(points.data(), static_cast<int>(points.size()), fill);
       draw->AddPolyline(points.data(), static_cast<int>(points.size()), line, ImDrawFlags_Closed, 2.5f);
     };
-    if (hoverFace_) outline(*hoverFace_, colour(80, 220, 255), colour(80, 220, 255, 70));
+    if (hoverFace_ && inView) outline(*hoverFace_, colour(80, 220, 255), colour(80, 220, 255, 70));
     if (firstFace_) outline(*firstFace_, colour(255, 120, 30), colour(255, 120, 30, 90));
   }
   draw->PopClipRect();

@@ -15,15 +15,22 @@ bool logSliderDouble(const char* label, double* value, double lo, double hi, con
                              ImGuiSliderFlags_Logarithmic | ImGuiSliderFlags_AlwaysClamp);
 }
 
+// The current tool's own brush (each tool keeps its own, as in Blender).
 void brushSettings(ToolState& t) {
-  ImGui::SliderFloat("Radius", &t.radiusPixels, 2.0f, 400.0f, "%.0f px", ImGuiSliderFlags_Logarithmic);
+  const BrushRef brush = t.brush();
+  ImGui::SliderFloat("Radius", &brush.radiusPixels, kMinBrushRadiusPixels, 400.0f, "%.0f px",
+                     ImGuiSliderFlags_Logarithmic);
   if (ImGui::IsItemHovered()) ImGui::SetTooltip("F + drag, or [ and ]");
+  bool unified = t.unifiedRadius;
+  if (ImGui::Checkbox("Unified radius", &unified)) t.setUnifiedRadius(unified);
+  if (ImGui::IsItemHovered())
+    ImGui::SetTooltip("One radius for every brush; off, each brush has its own again.");
   if (t.tool != ToolKind::Pin) {
-    ImGui::SliderFloat("Strength", &t.strength, 0.0f, 1.0f, "%.2f");
+    ImGui::SliderFloat("Strength", &brush.strength, 0.0f, 1.0f, "%.2f");
     if (ImGui::IsItemHovered()) ImGui::SetTooltip("Shift+F + drag");
-    int falloff = static_cast<int>(t.falloff);
+    int falloff = static_cast<int>(brush.falloff);
     if (ImGui::Combo("Falloff", &falloff, "Smooth\0Sphere\0Linear\0Sharp\0Constant\0"))
-      t.falloff = static_cast<Falloff>(falloff);
+      brush.falloff = static_cast<Falloff>(falloff);
   }
   if (t.tool == ToolKind::Paint) mirrorSettings(t);
 }

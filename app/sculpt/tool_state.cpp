@@ -11,6 +11,11 @@ const char* toolName(ToolKind tool) {
   return kNames[static_cast<int>(tool)];
 }
 
+const char* toolKey(ToolKind tool) {
+  static const char* const kKeys[] = {"pull", "inflate", "curve", "paint", "pin", "topology"};
+  return kKeys[static_cast<int>(tool)];
+}
+
 bool isBrushTool(ToolKind tool) {
   return tool == ToolKind::Inflate || tool == ToolKind::Paint || tool == ToolKind::Pin;
 }
@@ -26,12 +31,29 @@ bool needsTwoFaces(TopologyTool operation) {
   return operation == TopologyTool::Bridge || operation == TopologyTool::Weld;
 }
 
+BrushRef ToolState::brush(ToolKind kind) {
+  BrushSettings& own = brushes[static_cast<size_t>(kind)];
+  return {unifiedRadius ? unifiedRadiusPixels : own.radiusPixels, own.strength, own.falloff};
+}
+
+BrushSettings ToolState::brush(ToolKind kind) const {
+  BrushSettings settings = brushes[static_cast<size_t>(kind)];
+  if (unifiedRadius) settings.radiusPixels = unifiedRadiusPixels;
+  return settings;
+}
+
+void ToolState::setUnifiedRadius(bool on) {
+  if (on && !unifiedRadius) unifiedRadiusPixels = brushes[static_cast<size_t>(tool)].radiusPixels;
+  unifiedRadius = on;
+}
+
 MaterialBrushSettings paintBrush(const ToolState& state, double radius,
                                  const Eigen::Vector3d& mirrorCentre) {
+  const BrushSettings paint = state.brush(ToolKind::Paint);
   MaterialBrushSettings brush;
   brush.radius = radius;
-  brush.strength = state.strength;
-  brush.falloff = state.falloff;
+  brush.strength = paint.strength;
+  brush.falloff = paint.falloff;
   brush.target = state.paint;
   brush.fields = {state.field == PaintField::Density, state.field == PaintField::Damping,
                   state.field == PaintField::Youngs, false};
@@ -56,13 +78,30 @@ int clampIndex(double value, int count, int fallback) {
   return std::isfinite(value) && value >= 0 && value < count ? static_cast<int>(value) : fallback;
 }
 
+float clampRadius(double pixels, float fallback) {
+  return static_cast<float>(
+      clampFinite(pixels, kMinBrushRadiusPixels, kMaxBrushRadiusPixels, fallback));
+}
+
+std::string brushKey(ToolKind tool, const char* field) {
+  return std::string("tool.") + toolKey(tool) + "." + field;
+}
+
+// The tools whose brushes are kept in projects and preferences.
+constexpr ToolKind kBrushTools[] = {ToolKind::Inflate, ToolKind::Paint, ToolKind::Pin};
+
 }  // namespace
 
 void storeToolState(const ToolState& s, ToolSettings& t) {
   t["tool.kind"] = static_cast<double>(static_cast<int>(s.tool));
-  t["tool.radiusPixels"] = static_cast<double>(s.radiusPixels);
-  t["tool.strength"] = static_cast<double>(s.strength);
-  t["tool.falloff"] = std::string(falloffName(s.falloff));
+  t["tool.unifiedRadius"] = s.unifiedRadius;
+  t["tool.radiusPixels"] = static_cast<double>(s.unifiedRadiusPixels);  // the shared radius
+  for (const ToolKind tool : kBrushTools) {
+    const BrushSettings& own = s.brushes[static_cast<size_t>(tool)];
+    t[brushKey(tool, "radiusPixels")] = static_cast<double>(own.radiusPixels);
+    t[brushKey(tool, "strength")] = static_cast<double>(own.strength);
+    t[brushKey(tool, "falloff")] = std::string(falloffName(own.falloff));
+  }
   t["tool.mirrorX"] = s.mirrorX;
   t["tool.mirrorY"] = s.mirrorY;
   t["tool.mirrorZ"] = s.mirrorZ;
@@ -80,9 +119,22 @@ void storeToolState(const ToolState& s, ToolSettings& t) {
 ToolState loadToolState(const ToolSettings& t) {
   ToolState s;
   s.tool = static_cast<ToolKind>(clampIndex(get(t, "tool.kind", 0.0), kToolCount, 0));
-  s.radiusPixels = static_cast<float>(clampFinite(get(t, "tool.radiusPixels", 50.0), 2, 1000, 50));
-  s.strength = static_cast<float>(clampFinite(get(t, "tool.strength", 0.5), 0, 1, 0.5));
-  s.falloff = parseFalloff(get(t, "tool.falloff", std::string("smooth"))).value_or(Falloff::Smooth);
+  // Before brushes were per tool, "tool.radiusPixels", "tool.strength" and "tool.falloff" were
+  // every tool's: they are the fallback of each tool's own keys.
+  const BrushSettings defaults;
+  const double radius = get(t, "tool.radiusPixels", static_cast<double>(defaults.radiusPixels));
+  const double strength = get(t, "tool.strength", static_cast<double>(defaults.strength));
+  const std::string falloff = get(t, "tool.falloff", std::string(falloffName(defaults.falloff)));
+  s.unifiedRadius = get(t, "tool.unifiedRadius", false);
+  s.unifiedRadiusPixels = clampRadius(radius, defaults.radiusPixels);
+  for (const ToolKind tool : kBrushTools) {
+    BrushSettings& own = s.brushes[static_cast<size_t>(tool)];
+    own.radiusPixels = clampRadius(get(t, brushKey(tool, "radiusPixels"), radius), defaults.radiusPixels);
+    own.strength = static_cast<float>(
+        clampFinite(get(t, brushKey(tool, "strength"), strength), 0, 1, defaults.strength));
+    own.falloff =
+        parseFalloff(get(t, brushKey(tool, "falloff"), falloff)).value_or(defaults.falloff);
+  }
   s.mirrorX = get(t, "tool.mirrorX", true);
   s.mirrorY = get(t, "tool.mirrorY", false);
   s.mirrorZ = get(t, "tool.mirrorZ", false);
@@ -99,6 +151,25 @@ ToolState loadToolState(const ToolSettings& t) {
       clampIndex(get(t, "tool.topologyOperation", 0.0), kTopologyToolCount, 0));
   s.extrudeCells = clampFinite(get(t, "tool.extrudeCells", 1.0), 0.05, 10.0, 1.0);
   return s;
+}
+
+BrushRadii brushRadii(const ToolState& state) {
+  BrushRadii radii;
+  radii.unified = state.unifiedRadius;
+  radii.unifiedPixels = state.unifiedRadiusPixels;
+  for (const ToolKind tool : kBrushTools)
+    radii.byTool[toolKey(tool)] = state.brushes[static_cast<size_t>(tool)].radiusPixels;
+  return radii;
+}
+
+void restoreBrushRadii(ToolState& state, const BrushRadii& radii) {
+  state.unifiedRadius = radii.unified;
+  state.unifiedRadiusPixels = clampRadius(radii.unifiedPixels, kDefaultBrushRadiusPixels);
+  for (const ToolKind tool : kBrushTools)
+    if (const auto it = radii.byTool.find(toolKey(tool)); it != radii.byTool.end()) {
+      float& radius = state.brushes[static_cast<size_t>(tool)].radiusPixels;
+      radius = clampRadius(it->second, radius);
+    }
 }
 
 }  // namespace sculpt::app

@@ -9,9 +9,11 @@
 // undo entry per stroke or operation: paint (material into the volume), pin/unpin (control
 // points inside the brush) and the topology operations on the control mesh.
 
+#include <array>
 #include <string>
 
 #include "fem/material.h"
+#include "project/preferences.h"
 #include "project/project.h"
 #include "tools/material_brush.h"
 
@@ -20,6 +22,8 @@ namespace sculpt::app {
 enum class ToolKind { Pull = 0, Inflate, Curve, Paint, Pin, Topology };
 inline constexpr int kToolCount = 6;
 const char* toolName(ToolKind tool);
+/// The tool's name in project and preference keys ("pull", "inflate", ...).
+const char* toolKey(ToolKind tool);
 /// True for the tools drawn with a brush circle (radius, strength, falloff).
 bool isBrushTool(ToolKind tool);
 
@@ -34,12 +38,42 @@ bool needsTwoFaces(TopologyTool operation);
 inline constexpr double kMinPressureFraction = 1e-4, kMaxPressureFraction = 0.1;
 inline constexpr double kDefaultPressureFraction = 0.05;
 
-struct ToolState {
-  ToolKind tool = ToolKind::Pull;
-  // Brush (docs/design/ux.md: radius in screen pixels)
-  float radiusPixels = 50.0f;
+inline constexpr float kDefaultBrushRadiusPixels = 50.0f;
+inline constexpr float kMinBrushRadiusPixels = static_cast<float>(BrushRadii::kMinPixels);
+inline constexpr float kMaxBrushRadiusPixels = static_cast<float>(BrushRadii::kMaxPixels);
+
+/// One tool's brush (docs/design/ux.md: radius in screen pixels).
+struct BrushSettings {
+  float radiusPixels = kDefaultBrushRadiusPixels;
   float strength = 0.5f;  ///< [0, 1]: how far a dab moves a sample to the target; pin ignores it
   Falloff falloff = Falloff::Smooth;
+  bool operator==(const BrushSettings&) const = default;
+};
+
+/// A tool's brush as strokes, keys and the panel change it: the tool's own strength and falloff,
+/// and its own radius or, with the unified radius on, the shared one.
+struct BrushRef {
+  float& radiusPixels;
+  float& strength;
+  Falloff& falloff;
+};
+
+struct ToolState {
+  ToolKind tool = ToolKind::Pull;
+  // Each tool keeps its own brush, as in Blender: a large inflate leaves paint's radius alone.
+  std::array<BrushSettings, kToolCount> brushes{};  ///< by ToolKind; only brush tools use theirs
+  bool unifiedRadius = false;  ///< every tool uses unifiedRadiusPixels instead of its own radius
+  float unifiedRadiusPixels = kDefaultBrushRadiusPixels;
+
+  /// The current tool's brush (or `kind`'s), with the radius in use.
+  BrushRef brush() { return brush(tool); }
+  BrushSettings brush() const { return brush(tool); }
+  BrushRef brush(ToolKind kind);
+  BrushSettings brush(ToolKind kind) const;
+  /// Turning the unified radius on shares the current tool's radius (nothing on screen jumps);
+  /// turning it off gives each tool back its own.
+  void setUnifiedRadius(bool on);
+
   bool mirrorX = true, mirrorY = false, mirrorZ = false;
   // Pull
   bool keepOnRelease = false;
@@ -62,9 +96,16 @@ struct ToolState {
 MaterialBrushSettings paintBrush(const ToolState& state, double radius,
                                  const Eigen::Vector3d& mirrorCentre);
 
-/// The tool state as project tool settings ("tool.radius", ...) and back; keys missing or of the
-/// wrong kind keep the defaults, out-of-range values are clamped.
+/// The tool state as project tool settings ("tool.paint.radiusPixels", ...) and back; keys
+/// missing or of the wrong kind keep the defaults, out-of-range values are clamped. A project
+/// written before brushes were per tool has one "tool.radiusPixels" (and strength, falloff):
+/// every tool gets it.
 void storeToolState(const ToolState& state, ToolSettings& settings);
 ToolState loadToolState(const ToolSettings& settings);
+
+/// The brush radii kept in the preferences, so that a new window starts with the radii the user
+/// last used; restoring leaves tools the preferences do not name as they are.
+BrushRadii brushRadii(const ToolState& state);
+void restoreBrushRadii(ToolState& state, const BrushRadii& radii);
 
 }  // namespace sculpt::app

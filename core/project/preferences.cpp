@@ -70,6 +70,46 @@ class FieldReader {
   std::string& problem_;
 };
 
+double clampedRadius(double pixels) {
+  return std::clamp(pixels, BrushRadii::kMinPixels, BrushRadii::kMaxPixels);
+}
+
+// "brushRadii": {"unified": false, "unifiedPixels": 50, "byTool": {"paint": 40, ...}}; a value of
+// the wrong kind loses only itself, a number out of range is clamped.
+void readBrushRadii(const json& object, BrushRadii& radii, std::string& problem) {
+  const auto notice = [&problem](const std::string& key) {
+    if (problem.empty()) problem = "\"brushRadii" + key + "\" has an unusable value";
+  };
+  if (!object.is_object()) {
+    notice("");
+    return;
+  }
+  if (const auto it = object.find("unified"); it != object.end()) {
+    if (it->is_boolean())
+      radii.unified = it->get<bool>();
+    else
+      notice(".unified");
+  }
+  if (const auto it = object.find("unifiedPixels"); it != object.end()) {
+    if (it->is_number())
+      radii.unifiedPixels = clampedRadius(it->get<double>());
+    else
+      notice(".unifiedPixels");
+  }
+  if (const auto it = object.find("byTool"); it != object.end()) {
+    if (!it->is_object()) {
+      notice(".byTool");
+      return;
+    }
+    for (const auto& item : it->items()) {
+      if (item.value().is_number())
+        radii.byTool[item.key()] = clampedRadius(item.value().get<double>());
+      else
+        notice(".byTool." + item.key());
+    }
+  }
+}
+
 }  // namespace
 
 void Preferences::addRecentFile(const std::string& path) {
@@ -142,6 +182,8 @@ LoadedPreferences loadPreferences(const std::filesystem::path& path) {
   std::vector<std::string> recent;
   fields.read("recentFiles", recent, [](const std::vector<std::string>&) { return true; });
   for (auto it = recent.rbegin(); it != recent.rend(); ++it) p.addRecentFile(*it);
+  if (const auto it = root.find("brushRadii"); it != root.end())
+    readBrushRadii(*it, p.brushRadii, problem);
   if (!problem.empty()) result.warning = where + problem + "; using the default for it";
   return result;
 }
@@ -167,6 +209,10 @@ void savePreferences(const Preferences& preferences, const std::filesystem::path
         {"height", preferences.window.height},
         {"maximized", preferences.window.maximized}}},
       {"recentFiles", preferences.recentFiles},
+      {"brushRadii",
+       {{"unified", preferences.brushRadii.unified},
+        {"unifiedPixels", preferences.brushRadii.unifiedPixels},
+        {"byTool", preferences.brushRadii.byTool}}},
   };
   std::string text;
   try {

@@ -5,6 +5,7 @@
 // a failure to start.
 
 #include <filesystem>
+#include <map>
 #include <string>
 #include <vector>
 
@@ -17,6 +18,18 @@ struct WindowGeometry {
   bool operator==(const WindowGeometry&) const = default;
 };
 
+/// The sculpting brushes' radii the user last used, in screen pixels, by the app's tool names
+/// ("paint", ...), and its unified-radius switch. Read values are clamped to [kMinPixels,
+/// kMaxPixels].
+struct BrushRadii {
+  static constexpr double kMinPixels = 2.0, kMaxPixels = 1000.0;
+
+  std::map<std::string, double> byTool;  ///< a tool not named keeps the app's default
+  bool unified = false;
+  double unifiedPixels = 50.0;
+  bool operator==(const BrushRadii&) const = default;
+};
+
 struct Preferences {
   static constexpr size_t kMaxRecentFiles = 10;
 
@@ -24,6 +37,7 @@ struct Preferences {
   double uiScale = 0.0;  ///< the user's UI scale override; 0: from the monitor's content scale
   WindowGeometry window;
   std::vector<std::string> recentFiles;  ///< most recent first, no repeats, at most 10
+  BrushRadii brushRadii;
 
   /// Moves (or adds) `path` to the front of recentFiles and drops the oldest beyond 10.
   void addRecentFile(const std::string& path);

@@ -88,8 +88,8 @@ TEST_F(SculptSession, PullPaintAStiffEarExtrudeAndUndo) {
   tools.tool = ToolKind::Paint;
   tools.field = PaintField::Youngs;
   tools.paint.youngs = 3.0e8;
-  tools.strength = 1.0f;
-  tools.radiusPixels = 45.0f;
+  tools.brush().strength = 1.0f;
+  tools.brush().radiusPixels = 45.0f;
   tools.mirrorX = false;
   app_->model().display.field = FieldKind::YoungsModulus;
   const ImVec2 ear = screen(rest.row(top).transpose() - Eigen::Vector3d(0, 0.6, 0));
@@ -185,8 +185,8 @@ TEST_F(SculptSession, InflatePinCurveSaveAndOpenOnBlock3) {
   // Inflate grows the solid while held; Ctrl deflates it below where it started.
   tools.tool = ToolKind::Inflate;
   tools.pressureFraction = kMaxPressureFraction;
-  tools.strength = 1.0f;
-  tools.radiusPixels = 150.0f;
+  tools.brush().strength = 1.0f;
+  tools.brush().radiusPixels = 150.0f;
   const double settled = deformedVolume(mesh, app_->sceneView().frame().control);
   drag(middle, 0.0f, 0.0f, 1);
   frames(25);
@@ -207,7 +207,7 @@ TEST_F(SculptSession, InflatePinCurveSaveAndOpenOnBlock3) {
 
   // Pin paints pins onto control points under the brush (one undo entry); Ctrl unpins.
   tools.tool = ToolKind::Pin;
-  tools.radiusPixels = 120.0f;
+  tools.brush().radiusPixels = 120.0f;
   const size_t pinsBefore = app_->document().project().pins.size();
   drag(ImVec2(middle.x - 40, middle.y + 40), 80.0f, 0.0f, 6);
   release();
@@ -378,11 +378,11 @@ TEST_F(SculptSession, StrokesOfATakeAreMarkedOnTheTimelineAndSavedAsAScriptThatR
   drag(ImVec2(middle.x, middle.y - 30), 60.0f, -20.0f, 8);
   release();
   tools.tool = ToolKind::Paint;
-  tools.radiusPixels = 40.0f;
+  tools.brush().radiusPixels = 40.0f;
   drag(ImVec2(middle.x - 60, middle.y), 120.0f, 0.0f, 10);
   release();
   tools.tool = ToolKind::Inflate;
-  tools.radiusPixels = 120.0f;
+  tools.brush().radiusPixels = 120.0f;
   tools.pressureFraction = 0.01;
   drag(ImVec2(middle.x + 10, middle.y + 10), 0.0f, 0.0f, 1);
   frames(8);

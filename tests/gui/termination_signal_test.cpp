@@ -82,8 +82,8 @@ TEST_F(SculptSession, SigtermKeepsTheUnsavedStrokesInTheRecoveryFileOfferedAtThe
   tools.tool = ToolKind::Paint;
   tools.field = PaintField::Youngs;
   tools.paint.youngs = 3.0e8;
-  tools.strength = 1.0f;
-  tools.radiusPixels = 60.0f;
+  tools.brush().strength = 1.0f;
+  tools.brush().radiusPixels = 60.0f;
   drag(ImVec2(middle.x - 20, middle.y), 40.0f, 0.0f, 6);
   release();
   ASSERT_TRUE(framesUntil([this] { return app_->document().canUndo(); }));
@@ -93,7 +93,7 @@ TEST_F(SculptSession, SigtermKeepsTheUnsavedStrokesInTheRecoveryFileOfferedAtThe
 
   // A pin stroke still held when SIGTERM comes: it is ended and kept too.
   tools.tool = ToolKind::Pin;
-  tools.radiusPixels = 120.0f;
+  tools.brush().radiusPixels = 120.0f;
   const size_t pinsBefore = app_->document().project().pins.size();
   drag(ImVec2(middle.x - 40, middle.y + 40), 80.0f, 0.0f, 6);
   ASSERT_EQ(::raise(SIGTERM), 0);
