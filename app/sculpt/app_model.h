@@ -12,6 +12,7 @@
 
 #include "render/camera.h"
 #include "sculpt/display_settings.h"
+#include "sculpt/file_browser.h"
 #include "sculpt/navigation.h"
 #include "sculpt/record_state.h"
 #include "scene/scene_controller.h"
@@ -89,7 +90,7 @@ struct AppModel {
   Requests requests;
   ToolState tools;
   DocumentStatus document;
-  std::array<char, 1024> saveAsInput{};
+  FileBrowser fileBrowser;  ///< Open, Import surface, Save As and the export path
   bool openSaveAsDialog = false;  ///< Ctrl+Shift+S, or Save of an untitled project (next frame)
   bool openOpenDialog = false;    ///< Ctrl+O (next frame)
   /// The topology tool's face selection and hover, as "cell c, face f" for the panel.

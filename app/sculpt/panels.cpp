@@ -2,9 +2,12 @@
 
 #include <algorithm>
 #include <cstdio>
+#include <filesystem>
+#include <optional>
 #include <string>
 
 #include "sculpt/colour_bar.h"
+#include "sculpt/file_browser.h"
 #include "sculpt/record_panel.h"
 #include "sculpt/tool_panel.h"
 
@@ -27,6 +30,8 @@ void menuBar(AppModel& m) {
   if (ImGui::BeginMenu("File")) {
     if (ImGui::MenuItem("New (default bunny)")) r.loadScene = "<default>";
     if (ImGui::MenuItem("Open...", "Ctrl+O")) m.openOpenDialog = true;
+    if (ImGui::MenuItem("Import surface..."))
+      openFileBrowser(m.fileBrowser, FileBrowserUse::ImportSurface, std::string());
     if (ImGui::MenuItem("Save", "Ctrl+S")) r.save = true;
     if (ImGui::MenuItem("Save As...", "Ctrl+Shift+S")) openSaveAs = true;
     ImGui::Separator();
@@ -100,41 +105,30 @@ void menuBar(AppModel& m) {
   ImGui::EndMainMenuBar();
   if (openSaveAs || m.openSaveAsDialog) {
     m.openSaveAsDialog = false;
-    ImGui::OpenPopup("Save project as");
+    // Beside the file shown, under the document's name ("untitled.sculpt" for a new one).
+    const std::filesystem::path shown(m.sceneFile), name(m.document.name);
+    openFileBrowser(m.fileBrowser, FileBrowserUse::SaveProject,
+                    (shown.has_parent_path() ? shown.parent_path() / name : name).string());
   }
   if (m.openOpenDialog) {
     m.openOpenDialog = false;
-    ImGui::OpenPopup("Open");
+    openFileBrowser(m.fileBrowser, FileBrowserUse::Open, std::string());
   }
 }
 
-// A modal asking for a path; `accepted` receives it.
-void pathDialog(const char* title, const char* prompt, const char* action,
-                std::array<char, 1024>& input, std::string& accepted) {
-  ImGui::SetNextWindowPos(ImGui::GetMainViewport()->GetCenter(), ImGuiCond_Appearing,
-                          ImVec2(0.5f, 0.5f));
-  if (!ImGui::BeginPopupModal(title, nullptr, ImGuiWindowFlags_AlwaysAutoResize)) return;
-  ImGui::TextUnformatted(prompt);
-  ImGui::SetNextItemWidth(scaled(420));
-  if (ImGui::IsWindowAppearing()) ImGui::SetKeyboardFocusHere();
-  const bool entered = ImGui::InputText("##path", input.data(), input.size(),
-                                        ImGuiInputTextFlags_EnterReturnsTrue);
-  if ((ImGui::Button(action) || entered) && input[0] != 0) {
-    accepted = std::string(input.data());
-    ImGui::CloseCurrentPopup();
-  }
-  ImGui::SameLine();
-  if (ImGui::Button("Cancel")) ImGui::CloseCurrentPopup();
-  ImGui::EndPopup();
-}
-
-// Modal dialogs: Save As and Open (a path), unsaved changes on close, recovery after a crash.
+// Modal dialogs: the file browser (Open, Import, Save As, the export path), unsaved changes on
+// close, recovery after a crash.
 void dialogs(AppModel& m) {
   Requests& r = m.requests;
   const ImVec2 centre = ImGui::GetMainViewport()->GetCenter();
-  pathDialog("Save project as", "File (.sculpt):", "Save", m.saveAsInput, r.saveAs);
-  pathDialog("Open", "A project (.sculpt), a control mesh (.json) or a surface (.obj, .gltf, .glb):",
-             "Open", m.scenePathInput, r.loadScene);
+  if (const std::optional<std::string> path = drawFileBrowser(m.fileBrowser, m.recentScenes)) {
+    switch (m.fileBrowser.use) {
+      case FileBrowserUse::Open:
+      case FileBrowserUse::ImportSurface: r.loadScene = *path; break;
+      case FileBrowserUse::SaveProject: r.saveAs = *path; break;
+      case FileBrowserUse::Export: setExportPath(m.exportDialog, *path); break;
+    }
+  }
   if (m.document.closePrompt) ImGui::OpenPopup("Unsaved changes");
   ImGui::SetNextWindowPos(centre, ImGuiCond_Appearing, ImVec2(0.5f, 0.5f));
   if (ImGui::BeginPopupModal("Unsaved changes", nullptr, ImGuiWindowFlags_AlwaysAutoResize)) {

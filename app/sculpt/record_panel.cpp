@@ -8,6 +8,7 @@
 #include <imgui.h>
 
 #include "anim/take_surface.h"
+#include "sculpt/file_browser.h"
 
 namespace sculpt::app {
 namespace {
@@ -185,8 +186,17 @@ void drawExportDialog(AppModel& m) {
   ImGui::SetNextItemWidth(scaled(420));
   if (ImGui::Combo("Format", &d.format, kExportFormatLabels, kExportFormatCount))
     setExportPath(d, withExportSuffix(std::string(d.path.data()), d.format));
-  ImGui::SetNextItemWidth(scaled(420));
-  ImGui::InputText("File", d.path.data(), d.path.size());
+  const float browseWidth = ImGui::CalcTextSize("Browse...").x + 2 * ImGui::GetStyle().FramePadding.x;
+  ImGui::SetNextItemWidth(scaled(420) - browseWidth - ImGui::GetStyle().ItemInnerSpacing.x);
+  ImGui::InputText("##file", d.path.data(), d.path.size());
+  ImGui::SameLine(0, ImGui::GetStyle().ItemInnerSpacing.x);
+  // The browser opens at the top level next frame (a modal opened inside this window would
+  // belong to it) and writes the chosen path back into the field.
+  if (ImGui::Button("Browse..."))
+    openFileBrowser(m.fileBrowser, FileBrowserUse::Export, std::string(d.path.data()),
+                    exportSuffix(d.format));
+  ImGui::SameLine(0, ImGui::GetStyle().ItemInnerSpacing.x);
+  ImGui::TextUnformatted("File");
   const int frames = static_cast<int>(std::max<uint32_t>(m.record.frames, 1));
   ImGui::SetNextItemWidth(scaled(120));
   ImGui::InputInt("First frame", &d.first);

@@ -51,6 +51,8 @@ class SculptSession : public ::testing::Test {
       io.KeyShift = pointer_.shift;
       for (bool& down : io.KeysDown) down = false;
       if (pointer_.key >= 0) io.KeysDown[pointer_.key] = true;
+      for (const char c : typing_) io.AddInputCharacter(static_cast<unsigned char>(c));
+      typing_.clear();
     });
   }
   void TearDown() override {
@@ -95,6 +97,11 @@ class SculptSession : public ::testing::Test {
     pointer_.key = -1, pointer_.ctrl = false;
     frames(1);
   }
+  // `text` typed in one frame, into the text field that has the keyboard.
+  void type(const std::string& text) {
+    typing_ = text;
+    frames(1);
+  }
   const SceneGeometry& geometry() const { return *app_->sceneView().geometry(); }
 
   GLFWwindow* window_ = nullptr;
@@ -103,6 +110,7 @@ class SculptSession : public ::testing::Test {
   std::string images_;
   std::unique_ptr<SculptApp> app_;
   Pointer pointer_;
+  std::string typing_;  // characters for the next frame (type())
 };
 
 }  // namespace sculpt::app

@@ -1,0 +1,215 @@
+// The file browser through the real window (gui/sculpt_session.h): File > Open takes a typed
+// project path, arrow keys and Enter walk through folders to a control mesh, Tab completes a
+// typed name, and Save As over an existing file asks first: No keeps the old bytes, Yes
+// replaces them and the document takes the file's name. With SCULPT_SESSION_IMAGES set, the
+// browser's screenshots (scale 1 and 2) are written there.
+
+#include "render/gl.h"
+#define GLFW_INCLUDE_NONE
+#include <GLFW/glfw3.h>
+#include <gtest/gtest.h>
+#include <imgui.h>
+#include <imgui_internal.h>
+
+#include <filesystem>
+#include <fstream>
+#include <string>
+#include <vector>
+
+#include "gui/sculpt_session.h"
+#include "sculpt/sculpt_app.h"
+
+namespace sculpt::app {
+namespace {
+
+namespace fs = std::filesystem;
+
+const fs::path kAssets = fs::path(SCULPT_SOURCE_DIR) / "assets";
+
+std::string bytesOf(const fs::path& path) {
+  std::ifstream in(path, std::ios::binary);
+  return std::string((std::istreambuf_iterator<char>(in)), {});
+}
+
+class FileBrowserWindow : public SculptSession {
+ protected:
+  // Whether the ImGui window of this name was drawn in the last frame.
+  static bool showing(const char* name) {
+    const ImGuiWindow* window = ImGui::FindWindowByName(name);
+    return window && window->Active;
+  }
+  static bool browserShowing(const char* title) {
+    return showing((std::string(title) + "###file browser").c_str());
+  }
+  void enter() { press(GLFW_KEY_ENTER, false); }
+  void down() { press(GLFW_KEY_DOWN, false); }
+  std::string field() { return std::string(app_->model().fileBrowser.typed.data()); }
+};
+
+TEST_F(FileBrowserWindow, OpensAProjectByATypedPath) {
+  open((kAssets / "block3.json").string());
+  frames(3);
+  const fs::path first = folder_ / "first.sculpt", second = folder_ / "second.sculpt";
+  app_->model().requests.saveAs = first.string();
+  frames(1);
+  app_->model().requests.saveAs = second.string();
+  frames(1);
+  ASSERT_TRUE(fs::exists(first));
+  ASSERT_EQ(app_->document().path(), second);
+
+  press(GLFW_KEY_O, true);  // Ctrl+O
+  frames(2);
+  ASSERT_TRUE(browserShowing("Open"));
+  EXPECT_TRUE(ImGui::GetIO().WantTextInput) << "the path field takes the keyboard as it opens";
+  type(first.string());
+  EXPECT_EQ(field(), first.string());
+  enter();
+  frames(3);
+  EXPECT_FALSE(browserShowing("Open"));
+  EXPECT_EQ(app_->document().path(), first);
+  EXPECT_EQ(app_->document().title(), "first.sculpt");
+  EXPECT_EQ(app_->model().sceneFile, first.string());
+  EXPECT_EQ(app_->model().recentScenes.front(), first.string());
+}
+
+TEST_F(FileBrowserWindow, ArrowKeysAndEnterWalkThroughFoldersToAControlMesh) {
+  const fs::path browse = folder_ / "browse", mesh = browse / "meshes" / "block3.json";
+  fs::create_directories(mesh.parent_path());
+  fs::copy_file(kAssets / "block3.json", mesh);
+  std::ofstream(browse / "notes.txt") << "not a scene";  // filtered out of Openable
+  open((kAssets / "cube.json").string());
+  frames(3);
+  ASSERT_TRUE(app_->model().controlMeshScene);
+
+  press(GLFW_KEY_O, true);
+  frames(1);
+  type(browse.string() + "/");
+  enter();  // a typed folder is entered
+  const FileBrowser& browser = app_->model().fileBrowser;
+  EXPECT_EQ(browser.folder, browse);
+  ASSERT_EQ(browser.listing.entries.size(), 1u) << "only meshes/: notes.txt is not openable";
+  down();  // ".."
+  EXPECT_EQ(field(), "..");
+  down();  // meshes/
+  EXPECT_EQ(field(), "meshes/");
+  enter();
+  EXPECT_EQ(browser.folder, browse / "meshes");
+  EXPECT_TRUE(browserShowing("Open"));
+  down();
+  down();
+  EXPECT_EQ(field(), "block3.json");
+  enter();
+  frames(3);
+  EXPECT_FALSE(browserShowing("Open"));
+  EXPECT_EQ(app_->model().sceneFile, mesh.string());
+  EXPECT_TRUE(app_->model().controlMeshScene);
+  EXPECT_EQ(app_->document().project().controlMesh.numCells(), 27u) << "block3: 3 x 3 x 3 cells";
+
+  // Backspace (the field not being edited) goes up, Escape cancels: nothing more is loaded.
+  press(GLFW_KEY_O, true);
+  frames(1);
+  EXPECT_EQ(browser.folder, browse / "meshes") << "the browser opens where it was left";
+  drag(ImVec2(640.0f, 400.0f), 0, 0, 1);  // a click in the listing (the browser is centred)
+  release();
+  frames(1);  // (ImGui reports the field's state a frame late)
+  pointer_ = Pointer{};
+  ASSERT_FALSE(ImGui::GetIO().WantTextInput) << "the click left the path field";
+  press(GLFW_KEY_BACKSPACE, false);
+  EXPECT_EQ(browser.folder, browse);
+  press(GLFW_KEY_ESCAPE, false);
+  frames(2);
+  EXPECT_FALSE(browserShowing("Open"));
+  EXPECT_EQ(app_->model().sceneFile, mesh.string());
+}
+
+TEST_F(FileBrowserWindow, TabCompletesATypedNameAndListsTheCandidates) {
+  open((kAssets / "block3.json").string());
+  frames(3);
+  press(GLFW_KEY_O, true);
+  frames(1);
+  type(kAssets.string() + "/");
+  enter();
+  frames(1);  // the field takes the keyboard again
+  ASSERT_EQ(app_->model().fileBrowser.folder, kAssets);
+  type("bl");
+  press(GLFW_KEY_TAB, false);
+  EXPECT_EQ(field(), "block");
+  EXPECT_EQ(app_->model().fileBrowser.candidates,
+            (std::vector<std::string>{"block10.json", "block12.json", "block3.json"}));
+  frames(2, "file-browser.png");
+  // At UI scale 2 everything still fits (the screenshot shows it).
+  app_->model().uiScale = 2.0f;
+  app_->model().requests.uiScaleChanged = true;
+  frames(3, "file-browser-scale2.png");
+  type("3");
+  press(GLFW_KEY_TAB, false);
+  EXPECT_EQ(field(), "block3.json");
+  EXPECT_TRUE(app_->model().fileBrowser.candidates.empty());
+  press(GLFW_KEY_ESCAPE, false);
+  frames(1);
+  EXPECT_FALSE(browserShowing("Open"));
+}
+
+TEST_F(FileBrowserWindow, SaveAsOverAnExistingFileAsksFirst) {
+  open((kAssets / "block3.json").string());
+  frames(3);
+  const fs::path old = folder_ / "old.sculpt";
+  std::ofstream(old, std::ios::binary) << "the old bytes";
+  ASSERT_NE(app_->document().title(), "old.sculpt");
+  const std::string titleBefore = app_->document().title();
+  const auto saveAs = [&] {
+    pointer_.shift = true;
+    press(GLFW_KEY_S, true);  // Ctrl+Shift+S
+    pointer_.shift = false;
+    frames(1);
+    ASSERT_TRUE(browserShowing("Save project as"));
+    press(GLFW_KEY_A, true);  // Ctrl+A: the proposed name is replaced by what is typed
+    type(old.string());
+    enter();
+    frames(1);
+    ASSERT_TRUE(showing("Replace file?###replace")) << app_->model().fileBrowser.message;
+    EXPECT_EQ(app_->model().fileBrowser.pendingOverwrite, old.string());
+  };
+
+  saveAs();
+  frames(1, "file-browser-replace.png");
+  press(GLFW_KEY_N, false);  // No
+  frames(2);
+  EXPECT_FALSE(showing("Replace file?###replace"));
+  EXPECT_TRUE(browserShowing("Save project as")) << "No goes back to the browser";
+  EXPECT_EQ(bytesOf(old), "the old bytes");
+  EXPECT_EQ(app_->document().title(), titleBefore);
+  press(GLFW_KEY_ESCAPE, false);  // and Escape leaves it
+  frames(2);
+  EXPECT_FALSE(browserShowing("Save project as"));
+  EXPECT_EQ(bytesOf(old), "the old bytes");
+
+  saveAs();
+  press(GLFW_KEY_Y, false);  // Yes
+  frames(2);
+  EXPECT_FALSE(showing("Replace file?###replace"));
+  EXPECT_FALSE(browserShowing("Save project as"));
+  EXPECT_NE(bytesOf(old), "the old bytes");
+  EXPECT_EQ(app_->document().path(), old);
+  EXPECT_EQ(app_->document().title(), "old.sculpt");
+  EXPECT_FALSE(app_->document().dirty());
+}
+
+TEST_F(FileBrowserWindow, MissingPathsSayWhyInsideTheDialog) {
+  open((kAssets / "block3.json").string());
+  frames(3);
+  press(GLFW_KEY_O, true);
+  frames(1);
+  const std::string missing = (folder_ / "nowhere" / "x.sculpt").string();
+  type(missing);
+  enter();
+  EXPECT_TRUE(browserShowing("Open"));
+  EXPECT_EQ(app_->model().fileBrowser.message, "No such file: " + missing);
+  EXPECT_EQ(app_->model().sceneFile, (kAssets / "block3.json").string());
+  press(GLFW_KEY_ESCAPE, false);
+  frames(1);
+  EXPECT_FALSE(browserShowing("Open"));
+}
+
+}  // namespace
+}  // namespace sculpt::app
