@@ -12,6 +12,7 @@
 #include "edit/project_edit.h"
 #include "project/project_file.h"
 #include "scene/scene_file.h"
+#include "sculpt/display_state.h"
 #include "sculpt/sculpt_app.h"
 #include "sculpt/termination_signals.h"
 
@@ -43,6 +44,7 @@ void SculptApp::storeSettingsInProject() {
                                                        ? p.tools.at(kSceneSourceKey)
                                                        : ToolValue(std::string("bunny")));
   storeToolState(model_.tools, p.tools);
+  storeDisplayState(model_.display, p.tools);
   p.tools[kSceneSourceKey] = source;
   storeSceneSettings(model_.settings, p);
 }
@@ -73,6 +75,9 @@ void SculptApp::openProject(const std::filesystem::path& path, const std::filesy
   scene.source.project = nullptr;  // loadDocumentScene() gives the scene the document's project
   // Settings saved with the project
   model_.tools = loadToolState(project.tools);
+  model_.display = loadDisplayState(project.tools);
+  if (from == options_.scene)  // display switches given with the project win (--field, --clip)
+    model_.display = withCommandLineDisplay(model_.display, options_.display);
   model_.settings = scene.settings;
   if (from == options_.scene) applyCommandLineSettings();  // the project named on the command line
   const CameraState camera = project.camera;
