@@ -297,7 +297,9 @@ std::optional<std::string> replaceQuestion(FileBrowser& b) {
   std::optional<std::string> accepted;
   ImGui::SetNextWindowPos(ImGui::GetMainViewport()->GetCenter(), ImGuiCond_Appearing, ImVec2(0.5f, 0.5f));
   if (!ImGui::BeginPopupModal(kReplaceId, nullptr, ImGuiWindowFlags_AlwaysAutoResize)) return accepted;
-  ImGui::Text("%s already exists.", fs::path(b.pendingOverwrite).filename().c_str());
+  const std::string name = fs::path(b.pendingOverwrite).filename().string();
+  ImGui::Text(name.find('#') == std::string::npos ? "%s already exists." : "Frames of %s already exist.",
+              name.c_str());
   ImGui::TextDisabled("%s", fs::path(b.pendingOverwrite).parent_path().c_str());
   ImGui::TextUnformatted("Replace it?");
   const bool yes = ImGui::Button("Yes, replace (Y)") || ImGui::IsKeyPressed(kKeyY, false);
@@ -339,7 +341,8 @@ void openFileBrowser(FileBrowser& b, FileBrowserUse use, const std::string& star
       break;
     case FileBrowserUse::Export: {
       const std::string extension = fs::path(saveSuffix).extension().string();
-      b.filters = {{"This format (name" + saveSuffix + ")", {extension}}, fileFilter(FileKind::All)};
+      // (No "####" in a label: ImGui reads "##" as the start of an id.)
+      b.filters = {{"This format (" + extension + ")", {extension}}, fileFilter(FileKind::All)};
       b.filter = 0;
       b.saveSuffix = saveSuffix;
       break;

@@ -1,7 +1,8 @@
 // The file browser through the real window (gui/sculpt_session.h): File > Open takes a typed
 // project path, arrow keys and Enter walk through folders to a control mesh, Tab completes a
 // typed name, and Save As over an existing file asks first: No keeps the old bytes, Yes
-// replaces them and the document takes the file's name. With SCULPT_SESSION_IMAGES set, the
+// replaces them and the document takes the file's name. The export dialog's Browse... names a
+// sequence and asks before replacing one. With SCULPT_SESSION_IMAGES set, the
 // browser's screenshots (scale 1 and 2) are written there.
 
 #include "render/gl.h"
@@ -17,6 +18,7 @@
 #include <vector>
 
 #include "gui/sculpt_session.h"
+#include "sculpt/record_panel.h"
 #include "sculpt/sculpt_app.h"
 
 namespace sculpt::app {
@@ -193,6 +195,53 @@ TEST_F(FileBrowserWindow, SaveAsOverAnExistingFileAsksFirst) {
   EXPECT_EQ(app_->document().path(), old);
   EXPECT_EQ(app_->document().title(), "old.sculpt");
   EXPECT_FALSE(app_->document().dirty());
+}
+
+TEST_F(FileBrowserWindow, ExportBrowseNamesASequenceAndAsksBeforeReplacingOne) {
+  open((kAssets / "block3.json").string());
+  frames(3);
+  app_->model().requests.record.toggleRecord = true;
+  frames(6);
+  app_->model().requests.record.toggleRecord = true;
+  frames(1);
+  ASSERT_TRUE(app_->model().record.hasTake);
+  std::ofstream(folder_ / "walk_0001.obj") << "an earlier export";
+  ExportDialog& dialog = app_->model().exportDialog;
+  dialog.show = true;
+  dialog.format = exportFormatIndex(ExportFormat::ObjSequence);
+  setExportPath(dialog, (folder_ / "take_####.obj").string());
+  frames(2, "file-browser-export-dialog.png");
+
+  // Browse... ends the File row, scaled(420) from the window's left padding.
+  const ImGuiWindow* window = ImGui::FindWindowByName("Export recording");
+  ASSERT_NE(window, nullptr);
+  const ImGuiStyle& style = ImGui::GetStyle();
+  const float browse = ImGui::CalcTextSize("Browse...").x + 2 * style.FramePadding.x;
+  const ImVec2 button(window->Pos.x + style.WindowPadding.x + 420.0f * ImGui::GetFontSize() / 13.0f - 0.5f * browse,
+                      window->Pos.y + window->TitleBarHeight() + style.WindowPadding.y +
+                          ImGui::GetFrameHeightWithSpacing() + 0.5f * ImGui::GetFrameHeight());
+  drag(button, 0, 0, 1);
+  release();
+  pointer_ = Pointer{};
+  frames(2, "file-browser-export.png");
+  ASSERT_TRUE(browserShowing("Export recording to"));
+  const FileBrowser& browser = app_->model().fileBrowser;
+  EXPECT_EQ(browser.folder, folder_) << "it opens where the export path points";
+  EXPECT_EQ(field(), "take_####.obj");
+  EXPECT_EQ(browser.listing.entries.size(), 1u) << "only walk_0001.obj: the .obj files";
+
+  press(GLFW_KEY_A, true);
+  type("walk.obj");
+  enter();
+  frames(1);
+  ASSERT_TRUE(showing("Replace file?###replace"));
+  EXPECT_EQ(browser.pendingOverwrite, (folder_ / "walk_####.obj").string());
+  frames(1, "file-browser-export-replace.png");
+  press(GLFW_KEY_Y, false);
+  frames(1);
+  EXPECT_FALSE(browserShowing("Export recording to"));
+  EXPECT_EQ(std::string(dialog.path.data()), (folder_ / "walk_####.obj").string());
+  EXPECT_TRUE(dialog.show) << "the export dialog stays for the export itself";
 }
 
 TEST_F(FileBrowserWindow, MissingPathsSayWhyInsideTheDialog) {
