@@ -245,6 +245,8 @@ TEST_F(SculptSession, InflatePinCurveSaveAndOpenOnBlock3) {
 
   // Save As, then open the file in a new window: the same project, byte for byte.
   tools.tool = ToolKind::Paint;
+  tools.brush().strength = 1.0f;  // paint's own brush, as strong and wide as inflate's and pin's
+  tools.brush().radiusPixels = 120.0f;
   tools.mirrorX = true;
   drag(ImVec2(middle.x + 60, middle.y), 0.0f, 20.0f, 4);
   release();
