@@ -133,6 +133,7 @@ void SceneView::uploadField(const DisplaySettings& display) {
       std::chrono::duration<double, std::milli>(std::chrono::steady_clock::now() - start).count();
   nodeFieldSource_ = *values;
   nodeFieldCurrent_ = true;
+  ++nodeFieldReconstructions_;
   deformer_->setNodeField(nodeField_);
 }
 

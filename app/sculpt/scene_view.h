@@ -54,6 +54,8 @@ class SceneView {
   double lastUploadMs() const { return lastUploadMs_; }
   /// Wall time of the last reconstruction of node values from a cell field (smooth fields).
   double lastNodeFieldMs() const { return lastNodeFieldMs_; }
+  /// How many times node values were reconstructed (once per change of the cell values shown).
+  uint64_t nodeFieldReconstructions() const { return nodeFieldReconstructions_; }
   /// The node values of the cell field last shown smoothly (embed/node_field.h).
   const std::vector<float>& nodeField() const { return nodeField_; }
   /// Triangles of the embedded surface.
@@ -90,6 +92,7 @@ class SceneView {
   bool nodeFieldCurrent_ = false;  ///< the deformer holds nodeField_
   bool showsNodeField_ = false;    ///< nodeField_ is the field shown (smooth)
   double lastNodeFieldMs_ = 0.0;
+  uint64_t nodeFieldReconstructions_ = 0;
   glm::vec3 centre_{0.0f}, boxLow_{0.0f}, boxHigh_{0.0f};
   float radius_ = 1.0f;
   double lastUploadMs_ = 0.0;
