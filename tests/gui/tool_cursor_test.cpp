@@ -12,6 +12,7 @@
 #include <cstdio>
 #include <cstdlib>
 #include <filesystem>
+#include <ostream>
 #include <string>
 #include <vector>
 
@@ -35,6 +36,8 @@ struct CursorCase {
   float extent;    ///< the cursor lies within this many pixels of the pointer
   bool offModel;   ///< also drawn with the pointer over the background
 };
+
+void PrintTo(const CursorCase& c, std::ostream* out) { *out << toolKey(c.tool); }
 
 std::string fileName(ToolKind tool) { return std::string("cursor-") + toolKey(tool) + ".png"; }
 
