@@ -61,6 +61,7 @@ struct Status {
   size_t uploadBytes = 0, triangles = 0, nodes = 0;
   std::array<uint32_t, 3> elementCounts{};  ///< tricubic, trilinear, pyramid
   double simulatedTime = 0, stepsPerSecond = 0;
+  std::optional<double> realTimeFactor;  ///< simulated seconds per second, over the last second
   bool physicsReady = false, playing = true;
   std::string description, lastStepMessage;
   BuildStatus build;

@@ -8,8 +8,10 @@
 
 #include "sculpt/colour_bar.h"
 #include "sculpt/file_browser.h"
+#include "sculpt/real_time_factor.h"
 #include "sculpt/record_panel.h"
 #include "sculpt/tool_panel.h"
+#include "sculpt/value_slider.h"
 
 namespace sculpt::app {
 namespace {
@@ -19,6 +21,7 @@ constexpr ImGuiWindowFlags kPanelFlags = ImGuiWindowFlags_NoMove | ImGuiWindowFl
                                          ImGuiWindowFlags_NoSavedSettings |
                                          ImGuiWindowFlags_NoBringToFrontOnFocus;
 
+const ImVec4 kAmber(1.0f, 0.72f, 0.2f, 1.0f);
 constexpr double kCageMin = 3.0, kCageMax = 16.0, kPoissonMin = 0.0, kPoissonMax = 0.49;
 
 float scaled(float pixels) { return pixels * ImGui::GetFontSize() / 13.0f; }
@@ -84,7 +87,7 @@ void menuBar(AppModel& m) {
         m.preset = NavigationPreset::Stylus;
       ImGui::EndMenu();
     }
-    if (ImGui::SliderFloat("UI scale", &m.uiScale, 1.0f, 3.0f, "%.2f")) r.uiScaleChanged = true;
+    if (valueSliderFloat("UI scale", &m.uiScale, 1.0f, 3.0f, "%.2f")) r.uiScaleChanged = true;
     ImGui::EndMenu();
   }
   if (ImGui::BeginMenu("Simulation")) {
@@ -201,11 +204,6 @@ void toolPanel(AppModel& m, ImVec2 pos, ImVec2 size) {
   ImGui::End();
 }
 
-bool logSlider(const char* label, double* value, double lo, double hi, const char* format) {
-  return ImGui::SliderScalar(label, ImGuiDataType_Double, value, &lo, &hi, format,
-                             ImGuiSliderFlags_Logarithmic | ImGuiSliderFlags_AlwaysClamp);
-}
-
 void scenePanel(AppModel& m) {
   Requests& r = m.requests;
   SceneSettings& s = m.settings;
@@ -217,24 +215,24 @@ void scenePanel(AppModel& m) {
     if (ImGui::Button("Load") && m.scenePathInput[0] != 0)
       r.loadScene = std::string(m.scenePathInput.data());
     bool rebuild = false;
-    rebuild |= ImGui::SliderInt("Level K", &s.level, 1, 3, "%d", ImGuiSliderFlags_AlwaysClamp);
+    rebuild |= valueSliderInt("Level K", &s.level, 1, 3, "%d", ImGuiSliderFlags_AlwaysClamp);
     if (ImGui::IsItemHovered())
       ImGui::SetTooltip("Simulation level: elements live on the level-K cells (x8 per level)");
     if (!m.controlMeshScene)
-      rebuild |= ImGui::SliderScalar("Cage cells", ImGuiDataType_Double, &s.cageCellsAcross,
-                                     &kCageMin, &kCageMax, "%.0f across");
+      rebuild |= valueSliderDouble("Cage cells", &s.cageCellsAcross, kCageMin, kCageMax,
+                                   "%.0f across");
     else
-      rebuild |= ImGui::SliderInt("Render level", &s.renderLevel, 1, 5);
+      rebuild |= valueSliderInt("Render level", &s.renderLevel, 1, 5);
     if (rebuild && !ImGui::IsItemActive()) r.applySettings = true;
     if (ImGui::IsItemDeactivatedAfterEdit()) r.applySettings = true;
   }
   if (ImGui::CollapsingHeader("Material", ImGuiTreeNodeFlags_DefaultOpen)) {
     bool changed = false;
-    changed |= logSlider("Young's modulus", &s.material.youngs, 1e3, 1e9, "%.3g Pa");
-    changed |= ImGui::SliderScalar("Poisson ratio", ImGuiDataType_Double, &s.material.poisson,
-                                   &kPoissonMin, &kPoissonMax, "%.3f");
-    changed |= logSlider("Density", &s.material.density, 1.0, 1e5, "%.4g kg/m^3");
-    changed |= logSlider("Damping", &s.material.damping, 0.01, 1e5, "%.3g kg/(m^3 s)");
+    changed |= logValueSlider("Young's modulus", &s.material.youngs, 1e3, 1e9, "%.3g Pa");
+    changed |= valueSliderDouble("Poisson ratio", &s.material.poisson, kPoissonMin, kPoissonMax,
+                                 "%.3f");
+    changed |= logValueSlider("Density", &s.material.density, 1.0, 1e5, "%.4g kg/m^3");
+    changed |= logValueSlider("Damping", &s.material.damping, 0.01, 1e5, "%.3g kg/(m^3 s)");
     if (changed) r.applySettings = true;
   }
   if (ImGui::CollapsingHeader("Simulation", ImGuiTreeNodeFlags_DefaultOpen)) {
@@ -250,7 +248,7 @@ void scenePanel(AppModel& m) {
       ImGui::SetTooltip("The barrier pushes back parts squeezed below half their volume and turns "
                         "inverted ones back; both models agree until then.");
     double dtMs = s.timeStep * 1000.0;
-    if (logSlider("Time step", &dtMs, 0.1, 100.0, "%.2f ms")) {
+    if (logValueSlider("Time step", &dtMs, 0.1, 100.0, "%.2f ms")) {
       s.timeStep = dtMs / 1000.0;
       changed = true;
     }
@@ -348,6 +346,25 @@ void rightPanel(AppModel& m, ImVec2 pos, ImVec2 size) {
   ImGui::End();
 }
 
+// The simulation against the clock: amber while it falls behind (a stylus would feel the lag).
+void realTimeText(const Status& s) {
+  if (!s.playing || !s.physicsReady || !s.realTimeFactor) {
+    ImGui::TextDisabled("%s", s.playing ? "-- real time" : "paused");
+    return;
+  }
+  const std::string label = realTimeLabel(*s.realTimeFactor);
+  if (behindRealTime(*s.realTimeFactor))
+    ImGui::TextColored(kAmber, "%s", label.c_str());
+  else
+    ImGui::TextUnformatted(label.c_str());
+  if (ImGui::IsItemHovered())
+    ImGui::SetTooltip("Simulated seconds per second of the clock over the last second.%s",
+                      behindRealTime(*s.realTimeFactor)
+                          ? "\nBelow 1x the solid moves in slow motion: a coarser cage or a lower "
+                            "level keeps up."
+                          : "");
+}
+
 void bottomStrip(AppModel& m, ImVec2 pos, ImVec2 size) {
   ImGui::SetNextWindowPos(pos);
   ImGui::SetNextWindowSize(size);
@@ -360,11 +377,33 @@ void bottomStrip(AppModel& m, ImVec2 pos, ImVec2 size) {
   if (ImGui::Button("Reset")) r.reset = true;
   ImGui::SameLine();
   const Status& s = m.status;
-  ImGui::Text("t %.2f s | frame %.1f ms | sim %.1f ms/step (%.0f/s) | 3D view %.2f ms GPU, upload %.0f KiB "
-              "| %zu tris | %u tricubic, %u trilinear, %u pyramid%s",
-              s.simulatedTime, s.frameMs, s.simulationMs, s.stepsPerSecond, s.sceneDrawMs,
-              static_cast<double>(s.uploadBytes) / 1024.0, s.triangles, s.elementCounts[0],
-              s.elementCounts[1], s.elementCounts[2], s.physicsReady ? "" : " | preparing physics");
+  ImGui::Text("t %.2f s | sim %.1f ms/step (%.0f/s) |", s.simulatedTime, s.simulationMs,
+              s.stepsPerSecond);
+  ImGui::SameLine();
+  realTimeText(s);
+  ImGui::SameLine();
+  // The rest as far as the strip has room (UI scale 2 on a small window), most telling first;
+  // the whole line is the tooltip.
+  char parts[4][96];
+  std::snprintf(parts[0], sizeof parts[0], "| frame %.1f ms", s.frameMs);
+  std::snprintf(parts[1], sizeof parts[1], "| 3D view %.2f ms GPU, upload %.0f KiB", s.sceneDrawMs,
+                static_cast<double>(s.uploadBytes) / 1024.0);
+  std::snprintf(parts[2], sizeof parts[2], "| %zu tris", s.triangles);
+  std::snprintf(parts[3], sizeof parts[3], "| %u tricubic, %u trilinear, %u pyramid",
+                s.elementCounts[0], s.elementCounts[1], s.elementCounts[2]);
+  if (!s.physicsReady) {
+    ImGui::TextUnformatted("| preparing physics");
+    ImGui::SameLine();
+  }
+  std::string shown;
+  for (const char* part : parts) {
+    const std::string next = shown.empty() ? std::string(part) : shown + " " + part;
+    if (ImGui::CalcTextSize(next.c_str()).x > ImGui::GetContentRegionAvail().x) break;
+    shown = next;
+  }
+  ImGui::TextUnformatted(shown.c_str());
+  if (ImGui::IsItemHovered())
+    ImGui::SetTooltip("%s %s %s %s", parts[0], parts[1], parts[2], parts[3]);
   drawRecordStrip(m);
   ImGui::End();
 }
@@ -409,6 +448,9 @@ void drawToasts(AppModel& m, ViewRect view) {
   const auto now = std::chrono::steady_clock::now();
   std::erase_if(m.toasts, [&](const Toast& t) { return t.until < now; });
   float y = view.min.y + scaled(10);
+  const float wrapWidth = std::max(scaled(80), std::min(scaled(420), view.max.x - view.min.x -
+                                                                         scaled(20) -
+                                                                         2.0f * ImGui::GetStyle().WindowPadding.x));
   int index = 0;
   for (const Toast& toast : m.toasts) {
     ImGui::SetNextWindowPos(ImVec2(view.max.x - scaled(10), y), ImGuiCond_Always, ImVec2(1.0f, 0.0f));
@@ -418,10 +460,12 @@ void drawToasts(AppModel& m, ViewRect view) {
                  ImGuiWindowFlags_NoDecoration | ImGuiWindowFlags_AlwaysAutoResize |
                      ImGuiWindowFlags_NoSavedSettings | ImGuiWindowFlags_NoFocusOnAppearing |
                      ImGuiWindowFlags_NoNav);
-    if (toast.error)
-      ImGui::TextColored(ImVec4(1.0f, 0.45f, 0.4f, 1.0f), "%s", toast.text.c_str());
-    else
-      ImGui::TextUnformatted(toast.text.c_str());
+    // Wrapped to the 3D view's width, so that a long message never covers a panel.
+    ImGui::PushTextWrapPos(ImGui::GetCursorPosX() + wrapWidth);
+    if (toast.error) ImGui::PushStyleColor(ImGuiCol_Text, ImVec4(1.0f, 0.45f, 0.4f, 1.0f));
+    ImGui::TextUnformatted(toast.text.c_str());
+    if (toast.error) ImGui::PopStyleColor();
+    ImGui::PopTextWrapPos();
     y += ImGui::GetWindowHeight() + scaled(6);
     ImGui::End();
   }

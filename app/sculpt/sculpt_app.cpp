@@ -19,6 +19,7 @@
 #include "sculpt/colour_bar.h"
 #include "sculpt/draw_benchmark.h"
 #include "sculpt/help_overlay.h"
+#include "sculpt/real_time_factor.h"
 #include "sculpt/ui_scale.h"
 #include "scene/control_export.h"
 #include "scene/scene_file.h"
@@ -239,7 +240,10 @@ void SculptApp::syncScene() {
   const double window = secondsSince(rateWindowStart_);
   if (window > 1.0) {
     model_.status.stepsPerSecond = static_cast<double>(latest_.version - rateWindowVersion_) / window;
+    model_.status.realTimeFactor =
+        realTimeFactor(rateWindowSimulatedTime_, latest_.simulatedTime, window);
     rateWindowVersion_ = latest_.version;
+    rateWindowSimulatedTime_ = latest_.simulatedTime;
     rateWindowStart_ = Clock::now();
   }
   const BuildStatus build = controller_->buildStatus();

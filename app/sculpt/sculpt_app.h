@@ -169,6 +169,7 @@ class SculptApp {
   std::chrono::steady_clock::time_point lastFrameTime_;
   std::chrono::steady_clock::time_point rateWindowStart_;
   uint64_t rateWindowVersion_ = 0;
+  double rateWindowSimulatedTime_ = 0;
   bool imguiReady_ = false;
   std::function<void(ImGuiIO&, int)> inputHook_;
   int frameIndex_ = 0;
