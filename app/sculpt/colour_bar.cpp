@@ -54,7 +54,8 @@ void drawColourBar(FieldKind field, FieldRange range, ImVec2 viewMin, ImVec2 vie
   ImGui::TextUnformatted(title.c_str());
   ImDrawList* draw = ImGui::GetWindowDrawList();
   const ImVec2 below = ImGui::GetCursorScreenPos();
-  const ImVec2 top(below.x, ImGui::GetItemRectMax().y + titleGap);
+  // On whole pixels: the ends of the bar then show the ends of the map exactly.
+  const ImVec2 top(std::floor(below.x), std::floor(ImGui::GetItemRectMax().y + titleGap));
   // High values at the top: the bar is drawn in slices, each a vertical gradient.
   constexpr int kSlices = 32;
   for (int k = 0; k < kSlices; ++k) {

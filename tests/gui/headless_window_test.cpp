@@ -119,7 +119,9 @@ TEST_F(HeadlessWindow, DefaultSceneAfter60FramesShowsTheCentredObject) {
   const Coverage c = coverage(image);
   std::printf("[ measured ] object covers %.1f%% of the image, centroid (%.0f, %.0f), %d black\n",
               100 * c.fraction, c.cx, c.cy, c.black);
-  EXPECT_GT(c.fraction, 0.10);
+  // The framed bounding sphere spans 80 % of the height: a disc of 31 % of the image, of which
+  // the bunny covers about a third.
+  EXPECT_GT(c.fraction, 0.08);
   EXPECT_LT(c.fraction, 0.80);
   EXPECT_EQ(c.black, 0);
   EXPECT_NEAR(c.cx, image.width / 2.0, 0.12 * image.width);
