@@ -26,29 +26,34 @@ constexpr double kCageMin = 3.0, kCageMax = 16.0, kPoissonMin = 0.0, kPoissonMax
 
 float scaled(float pixels) { return pixels * ImGui::GetFontSize() / 13.0f; }
 
+// A menu entry's shortcut column: ImGui leaves one item spacing before it, which long entries
+// ("Undo Paint Young's modulus") run into; three spaces more keep the shortcuts apart.
+std::string keys(const char* shortcut) { return std::string("   ") + shortcut; }
+
 void menuBar(AppModel& m) {
   if (!ImGui::BeginMainMenuBar()) return;
   Requests& r = m.requests;
   bool openSaveAs = false;
   if (ImGui::BeginMenu("File")) {
     if (ImGui::MenuItem("New (default bunny)")) r.loadScene = "<default>";
-    if (ImGui::MenuItem("Open...", "Ctrl+O")) m.openOpenDialog = true;
+    if (ImGui::MenuItem("Open...", keys("Ctrl+O").c_str())) m.openOpenDialog = true;
     if (ImGui::MenuItem("Import surface..."))
       openFileBrowser(m.fileBrowser, FileBrowserUse::ImportSurface, std::string());
-    if (ImGui::MenuItem("Save", "Ctrl+S")) r.save = true;
-    if (ImGui::MenuItem("Save As...", "Ctrl+Shift+S")) openSaveAs = true;
+    if (ImGui::MenuItem("Save", keys("Ctrl+S").c_str())) r.save = true;
+    if (ImGui::MenuItem("Save As...", keys("Ctrl+Shift+S").c_str())) openSaveAs = true;
     ImGui::Separator();
     if (ImGui::BeginMenu("Recent files", !m.recentScenes.empty())) {
       for (const std::string& path : m.recentScenes)
         if (ImGui::MenuItem(path.c_str())) r.loadScene = path;
       ImGui::EndMenu();
     }
-    if (ImGui::MenuItem("Export recording...", nullptr, false, m.record.hasTake && !m.record.recording))
+    if (ImGui::MenuItem("Export recording...", nullptr, false,
+                        m.record.hasTake && !m.record.recording))
       m.exportDialog.show = true;
     if (ImGui::MenuItem("Save take script", nullptr, false,
                         m.record.hasTake && !m.record.recording && m.record.strokes > 0))
       r.record.saveScript = true;
-    if (ImGui::MenuItem("Screenshot", "F12")) r.screenshot = true;
+    if (ImGui::MenuItem("Screenshot", keys("F12").c_str())) r.screenshot = true;
     if (ImGui::BeginMenu("Screenshot options")) {
       ImGui::RadioButton("1x", &m.screenshot.supersample, 1);
       ImGui::SameLine();
@@ -60,24 +65,30 @@ void menuBar(AppModel& m) {
       ImGui::EndMenu();
     }
     ImGui::Separator();
-    if (ImGui::MenuItem("Quit", "Ctrl+Q")) r.quit = true;
+    if (ImGui::MenuItem("Quit", keys("Ctrl+Q").c_str())) r.quit = true;
     ImGui::EndMenu();
   }
   if (ImGui::BeginMenu("Edit")) {
     const std::string undo = "Undo " + m.document.undoLabel, redo = "Redo " + m.document.redoLabel;
-    if (ImGui::MenuItem(undo.c_str(), "Ctrl+Z", false, m.document.canUndo)) r.undo = true;
-    if (ImGui::MenuItem(redo.c_str(), "Ctrl+Shift+Z", false, m.document.canRedo)) r.redo = true;
+    if (ImGui::MenuItem(undo.c_str(), keys("Ctrl+Z").c_str(), false, m.document.canUndo))
+      r.undo = true;
+    if (ImGui::MenuItem(redo.c_str(), keys("Ctrl+Shift+Z").c_str(), false, m.document.canRedo))
+      r.redo = true;
     ImGui::EndMenu();
   }
   if (ImGui::BeginMenu("View")) {
-    if (ImGui::MenuItem("Frame model", "F")) r.frameModel = true;
-    if (ImGui::MenuItem("Frame all", "Home")) r.frameAll = true;
-    if (ImGui::MenuItem("Front", "Numpad 1")) r.standardView = render::StandardView::Front;
-    if (ImGui::MenuItem("Right", "Numpad 3")) r.standardView = render::StandardView::Right;
-    if (ImGui::MenuItem("Top", "Numpad 7")) r.standardView = render::StandardView::Top;
-    if (ImGui::MenuItem("Perspective / orthographic", "Numpad 5")) r.toggleOrthographic = true;
+    if (ImGui::MenuItem("Frame model", keys("F").c_str())) r.frameModel = true;
+    if (ImGui::MenuItem("Frame all", keys("Home").c_str())) r.frameAll = true;
+    if (ImGui::MenuItem("Front", keys("Numpad 1").c_str()))
+      r.standardView = render::StandardView::Front;
+    if (ImGui::MenuItem("Right", keys("Numpad 3").c_str()))
+      r.standardView = render::StandardView::Right;
+    if (ImGui::MenuItem("Top", keys("Numpad 7").c_str()))
+      r.standardView = render::StandardView::Top;
+    if (ImGui::MenuItem("Perspective / orthographic", keys("Numpad 5").c_str()))
+      r.toggleOrthographic = true;
     ImGui::Separator();
-    ImGui::MenuItem("Panels", "Tab", &m.showPanels);
+    ImGui::MenuItem("Panels", keys("Tab").c_str(), &m.showPanels);
     ImGui::MenuItem("Stylus device", nullptr, &m.showStylus);
     if (ImGui::BeginMenu("Navigation preset")) {
       if (ImGui::MenuItem("Blender (middle mouse)", nullptr, m.preset == NavigationPreset::Blender))
@@ -91,14 +102,16 @@ void menuBar(AppModel& m) {
     ImGui::EndMenu();
   }
   if (ImGui::BeginMenu("Simulation")) {
-    if (ImGui::MenuItem(m.status.playing ? "Pause" : "Play", "Space")) r.togglePlay = true;
-    if (ImGui::MenuItem("Step", ".")) r.stepOnce = true;
-    if (ImGui::MenuItem("Reset", "Shift+R")) r.reset = true;
-    if (ImGui::MenuItem(m.record.recording ? "Stop recording" : "Record", "R")) r.record.toggleRecord = true;
+    if (ImGui::MenuItem(m.status.playing ? "Pause" : "Play", keys("Space").c_str()))
+      r.togglePlay = true;
+    if (ImGui::MenuItem("Step", keys(".").c_str())) r.stepOnce = true;
+    if (ImGui::MenuItem("Reset", keys("Shift+R").c_str())) r.reset = true;
+    if (ImGui::MenuItem(m.record.recording ? "Stop recording" : "Record", keys("R").c_str()))
+      r.record.toggleRecord = true;
     ImGui::EndMenu();
   }
   if (ImGui::BeginMenu("Help")) {
-    if (ImGui::MenuItem("Keys and mouse", "F1")) m.showHelp = true;
+    if (ImGui::MenuItem("Keys and mouse", keys("F1").c_str())) m.showHelp = true;
     ImGui::EndMenu();
   }
   // The window title is the document's; the menu bar repeats it for full-screen use.
@@ -331,7 +344,7 @@ void displayPanel(AppModel& m) {
     ImGui::RadioButton("y", &d.clipAxis, 1);
     ImGui::SameLine();
     ImGui::RadioButton("z", &d.clipAxis, 2);
-    ImGui::SliderFloat("Position", &d.clipPosition, 0.0f, 1.0f, "%.2f");
+    valueSliderFloat("Position", &d.clipPosition, 0.0f, 1.0f, "%.2f");
   }
 }
 

@@ -9,6 +9,7 @@
 
 #include "anim/take_surface.h"
 #include "sculpt/file_browser.h"
+#include "sculpt/value_slider.h"
 
 namespace sculpt::app {
 namespace {
@@ -66,10 +67,12 @@ void drawTimelineMarks(const RecordStatus& s, int lastFrame) {
 
 }  // namespace
 
+// (No "##" in these: ImGui would hide the rest of the label.)
 const char* const kExportFormatLabels[kExportFormatCount] = {
     "glTF morph animation (.glb)", "Blender point cache (.pc2)", "LightWave point cache (.mdd)",
-    "OBJ sequence (name_####.obj)", "VTK sequence (name_####.vtk)", "VTU + PVD (name_####.vtu)",
-    "PNG frames of the view (name_####.png)", "H.264 video of the view (.mp4)"};
+    "OBJ sequence (name_0001.obj, ...)", "VTK sequence (name_0001.vtk, ...)",
+    "VTU + PVD (name_0001.vtu, ...)", "PNG frames of the view (name_0001.png, ...)",
+    "H.264 video of the view (.mp4)"};
 
 ExportFormat exportFormatAt(int index) { return kFormats[static_cast<size_t>(std::clamp(index, 0, kExportFormatCount - 1))]; }
 const char* exportSuffix(int index) { return kSuffixes[static_cast<size_t>(std::clamp(index, 0, kExportFormatCount - 1))]; }
@@ -161,7 +164,7 @@ void drawRecordStrip(AppModel& m) {
   const int last = std::max(0, static_cast<int>(s.frames) - 1);
   char label[48];
   std::snprintf(label, sizeof label, "%.2f s", s.takeFps > 0 ? frame / s.takeFps : 0.0);
-  if (ImGui::SliderInt("##timeline", &frame, 0, last, label, ImGuiSliderFlags_AlwaysClamp))
+  if (valueSliderInt("##timeline", &frame, 0, last, label, ImGuiSliderFlags_AlwaysClamp))
     r.playhead = static_cast<uint32_t>(frame);
   drawTimelineMarks(s, last);
   ImGui::SameLine();

@@ -10,6 +10,7 @@
 
 #include "edit/project_edit.h"
 #include "edit/topology_operation.h"
+#include "sculpt/overlay_label.h"
 #include "sculpt/sculpt_app.h"
 
 namespace sculpt::app {
@@ -559,7 +560,7 @@ void SculptApp::drawToolOverlay(const ViewRect& view) {
       else
         std::snprintf(text, sizeof text, t.unifiedRadius ? "radius %.0f px (unified)" : "radius %.0f px",
                       brush.radiusPixels);
-      draw->AddText(ImVec2(centre.x + brush.radiusPixels + 6, centre.y), colour(255, 255, 255), text);
+      drawOverlayLabel(draw, centre, brush.radiusPixels, colour(255, 255, 255), text);
     }
   }
   const bool pulling = stroke_ != 0 && strokeTool_ == ToolKind::Pull;  // its spring is drawn
@@ -594,7 +595,8 @@ void SculptApp::drawToolOverlay(const ViewRect& view) {
     else
       std::snprintf(text, sizeof text, "%.3g N", spring.force);
     const ImVec2 at = screen(glm::vec3(target.x(), target.y(), target.z()));
-    draw->AddText(ImVec2(at.x + 8, at.y - 8), colour(255, 120, 100), text);
+    // Beside the spring's end dot (8 px across), on a backdrop: readable on the light model.
+    drawOverlayLabel(draw, at, 5.0f, colour(255, 150, 130), text);
   }
   if (!curveWorld_.empty() && t.tool == ToolKind::Curve) {
     std::vector<ImVec2> points;

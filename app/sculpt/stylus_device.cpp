@@ -5,6 +5,7 @@
 #include <cstdio>
 
 #include "haptics/hid/hidapi_transport.h"
+#include "sculpt/value_slider.h"
 
 namespace sculpt::app {
 namespace {
@@ -151,7 +152,7 @@ void StylusDevice::drawPanel(ImVec2 viewMin, ImVec2 viewMax) {
     paint_ = tool == 2;
     if (session_) session_->setTool(tool_, paint_);
   }
-  if (ImGui::SliderFloat("Scene force x", &forceFactor_, 0.1f, 10.0f, "%.2f", ImGuiSliderFlags_Logarithmic) &&
+  if (valueSliderFloat("Scene force x", &forceFactor_, 0.1f, 10.0f, "%.2f", ImGuiSliderFlags_Logarithmic) &&
       session_)
     session_->setForceFactor(forceFactor_);
   ImGui::Checkbox("Tint the background with the force", &tint_);

@@ -2,6 +2,8 @@
 
 #include <imgui.h>
 
+#include "sculpt/value_slider.h"
+
 namespace sculpt::app {
 namespace {
 
@@ -10,23 +12,18 @@ void pressureSlider(ToolState& t, double youngs);
 
 constexpr double kExtrudeMin = 0.05, kExtrudeMax = 5.0;
 
-bool logSliderDouble(const char* label, double* value, double lo, double hi, const char* format) {
-  return ImGui::SliderScalar(label, ImGuiDataType_Double, value, &lo, &hi, format,
-                             ImGuiSliderFlags_Logarithmic | ImGuiSliderFlags_AlwaysClamp);
-}
-
 // The current tool's own brush (each tool keeps its own, as in Blender).
 void brushSettings(ToolState& t) {
   const BrushRef brush = t.brush();
-  ImGui::SliderFloat("Radius", &brush.radiusPixels, kMinBrushRadiusPixels, 400.0f, "%.0f px",
-                     ImGuiSliderFlags_Logarithmic);
+  valueSliderFloat("Radius", &brush.radiusPixels, kMinBrushRadiusPixels, 400.0f, "%.0f px",
+                   ImGuiSliderFlags_Logarithmic);
   if (ImGui::IsItemHovered()) ImGui::SetTooltip("F + drag, or [ and ]");
   bool unified = t.unifiedRadius;
   if (ImGui::Checkbox("Unified radius", &unified)) t.setUnifiedRadius(unified);
   if (ImGui::IsItemHovered())
     ImGui::SetTooltip("One radius for every brush; off, each brush has its own again.");
   if (t.tool != ToolKind::Pin) {
-    ImGui::SliderFloat("Strength", &brush.strength, 0.0f, 1.0f, "%.2f");
+    valueSliderFloat("Strength", &brush.strength, 0.0f, 1.0f, "%.2f");
     if (ImGui::IsItemHovered()) ImGui::SetTooltip("Shift+F + drag");
     int falloff = static_cast<int>(brush.falloff);
     if (ImGui::Combo("Falloff", &falloff, "Smooth\0Sphere\0Linear\0Sharp\0Constant\0"))
@@ -38,8 +35,8 @@ void brushSettings(ToolState& t) {
 // In Pa, over a range that follows the scene's Young's modulus (ToolState::pressureFraction).
 void pressureSlider(ToolState& t, double youngs) {
   double pressure = t.pressureFraction * youngs;
-  if (logSliderDouble("Pressure", &pressure, kMinPressureFraction * youngs,
-                      kMaxPressureFraction * youngs, "%.3g Pa"))
+  if (logValueSlider("Pressure", &pressure, kMinPressureFraction * youngs,
+                     kMaxPressureFraction * youngs, "%.3g Pa"))
     t.pressureFraction = pressure / youngs;
   if (ImGui::IsItemHovered())
     ImGui::SetTooltip("Up to a tenth of the solid's Young's modulus (%.3g Pa): above about a "
@@ -92,11 +89,11 @@ void drawToolSettings(AppModel& m) {
       if (ImGui::Combo("Field", &field, "Young's modulus\0Density\0Damping\0"))
         t.field = static_cast<PaintField>(field);
       if (t.field == PaintField::Youngs)
-        logSliderDouble("Value", &t.paint.youngs, 1e3, 1e9, "%.3g Pa");
+        logValueSlider("Value", &t.paint.youngs, 1e3, 1e9, "%.3g Pa");
       else if (t.field == PaintField::Density)
-        logSliderDouble("Value", &t.paint.density, 1.0, 1e5, "%.4g kg/m^3");
+        logValueSlider("Value", &t.paint.density, 1.0, 1e5, "%.4g kg/m^3");
       else
-        logSliderDouble("Value", &t.paint.damping, 0.01, 1e5, "%.3g kg/m^3/s");
+        logValueSlider("Value", &t.paint.damping, 0.01, 1e5, "%.3g kg/m^3/s");
       brushSettings(t);
       break;
     }
@@ -113,8 +110,7 @@ void drawToolSettings(AppModel& m) {
       if (ImGui::Combo("##operation", &operation, name, nullptr, kTopologyToolCount))
         t.operation = static_cast<TopologyTool>(operation);
       if (t.operation == TopologyTool::Extrude)
-        ImGui::SliderScalar("Distance", ImGuiDataType_Double, &t.extrudeCells,
-                            &kExtrudeMin, &kExtrudeMax, "%.2f cells");
+        valueSliderDouble("Distance", &t.extrudeCells, kExtrudeMin, kExtrudeMax, "%.2f cells");
       if (!needsTwoFaces(t.operation)) mirrorSettings(t);
       ImGui::TextWrapped(needsTwoFaces(t.operation)
                              ? "Click two boundary faces of the control mesh."

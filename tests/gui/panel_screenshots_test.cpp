@@ -66,7 +66,19 @@ TEST_P(PanelScreenshots, EveryPanelMenuAndDialog) {
   frames(2, name("panels-inflate"));
   app_->model().tools.tool = ToolKind::Topology;
   frames(2, name("panels-topology"));
+  // A stroke, so that Edit names what it undoes.
+  const ViewRect view = app_->viewRect();
+  const ImVec2 middle(0.5f * (view.min.x + view.max.x), 0.5f * (view.min.y + view.max.y));
+  app_->model().tools.tool = ToolKind::Paint;
+  drag(middle, 20.0f * GetParam().scale, 0.0f, 4);
+  release();
+  frames(2);
+  EXPECT_TRUE(app_->model().document.canUndo) << "the paint stroke is an undo entry";
+  // A pull held at the middle of the view: its spring and force label.
   app_->model().tools.tool = ToolKind::Pull;
+  drag(middle, 60.0f * GetParam().scale, -40.0f * GetParam().scale, 6);
+  frames(4, name("pull-label"));
+  release();
   // The menus, opened by clicking their titles (x of each title at scale 1).
   const struct {
     const char* name;
