@@ -136,7 +136,8 @@ float StylusDevice::forceFraction() const {
 void StylusDevice::drawPanel(ImVec2 viewMin, ImVec2 viewMax) {
   (void)viewMax;
   ImGui::SetNextWindowPos(ImVec2(viewMin.x + 10, viewMin.y + 10), ImGuiCond_FirstUseEver);
-  ImGui::SetNextWindowSizeConstraints(ImVec2(380, 0), ImVec2(600, 600));
+  const float scale = ImGui::GetFontSize() / 13.0f;  // the limits follow the UI scale
+  ImGui::SetNextWindowSizeConstraints(ImVec2(380 * scale, 0), ImVec2(600 * scale, 600 * scale));
   if (!ImGui::Begin("Stylus", nullptr, ImGuiWindowFlags_AlwaysAutoResize)) {
     ImGui::End();
     return;
@@ -152,7 +153,8 @@ void StylusDevice::drawPanel(ImVec2 viewMin, ImVec2 viewMax) {
     paint_ = tool == 2;
     if (session_) session_->setTool(tool_, paint_);
   }
-  if (valueSliderFloat("Scene force x", &forceFactor_, 0.1f, 10.0f, "%.2f", ImGuiSliderFlags_Logarithmic) &&
+  if (valueSliderFloat("Scene force x", &forceFactor_, 0.1f, 10.0f, "%.2f",
+                       ImGuiSliderFlags_Logarithmic) &&
       session_)
     session_->setForceFactor(forceFactor_);
   ImGui::Checkbox("Tint the background with the force", &tint_);
