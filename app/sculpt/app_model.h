@@ -35,6 +35,7 @@ struct Requests {
   bool togglePlay = false, stepOnce = false, reset = false;
   bool applySettings = false;  ///< the edited SceneSettings (rebuilds when needed)
   std::string loadScene;       ///< a path to load (a scene or a .sculpt project); empty: none
+  std::string replayScript;    ///< a session script to play on the scene shown; empty: none
   bool cancelBuild = false, quit = false, uiScaleChanged = false;
   // Edit history and files (document.h)
   bool undo = false, redo = false, save = false;

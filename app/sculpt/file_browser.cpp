@@ -21,6 +21,7 @@ const char* titleOf(FileBrowserUse use) {
     case FileBrowserUse::ImportSurface: return "Import surface";
     case FileBrowserUse::SaveProject: return "Save project as";
     case FileBrowserUse::Export: return "Export recording to";
+    case FileBrowserUse::ReplayScript: return "Replay session script";
   }
   return "File";
 }
@@ -328,6 +329,11 @@ void openFileBrowser(FileBrowser& b, FileBrowserUse use, const std::string& star
   b.save = use == FileBrowserUse::SaveProject || use == FileBrowserUse::Export;
   b.filters.clear();
   switch (use) {
+    case FileBrowserUse::ReplayScript:
+      b.filters = {fileFilter(FileKind::Script), fileFilter(FileKind::All)};
+      b.filter = 0;
+      b.saveSuffix.clear();
+      break;
     case FileBrowserUse::Open:
     case FileBrowserUse::ImportSurface:
       for (int k = 0; k < kFileKindCount; ++k) b.filters.push_back(fileFilter(static_cast<FileKind>(k)));

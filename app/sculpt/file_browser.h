@@ -15,7 +15,7 @@
 namespace sculpt::app {
 
 /// What the browser was opened for: its title, filters and mode, and where the answer goes.
-enum class FileBrowserUse { Open, ImportSurface, SaveProject, Export };
+enum class FileBrowserUse { Open, ImportSurface, SaveProject, Export, ReplayScript };
 
 struct FileBrowser {
   FileBrowserUse use = FileBrowserUse::Open;

@@ -47,6 +47,11 @@ void menuBar(AppModel& m) {
         if (ImGui::MenuItem(path.c_str())) r.loadScene = path;
       ImGui::EndMenu();
     }
+    if (ImGui::MenuItem("Replay session script..."))
+      openFileBrowser(m.fileBrowser, FileBrowserUse::ReplayScript, std::string());
+    if (ImGui::IsItemHovered())
+      ImGui::SetTooltip("Plays a script's pulls, paint, pins and inflation on the scene shown "
+                        "(docs/file-formats.md); its topology events edit the cage first.");
     if (ImGui::MenuItem("Export recording...", nullptr, false,
                         m.record.hasTake && !m.record.recording))
       m.exportDialog.show = true;
@@ -143,6 +148,7 @@ void dialogs(AppModel& m) {
       case FileBrowserUse::ImportSurface: r.loadScene = *path; break;
       case FileBrowserUse::SaveProject: r.saveAs = *path; break;
       case FileBrowserUse::Export: setExportPath(m.exportDialog, *path); break;
+      case FileBrowserUse::ReplayScript: r.replayScript = *path; break;
     }
   }
   if (m.document.closePrompt) ImGui::OpenPopup("Unsaved changes");

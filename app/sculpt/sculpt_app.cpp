@@ -108,14 +108,8 @@ SculptApp::SculptApp(GLFWwindow* window, const Options& options, Clock::time_poi
     controller_->load(documentSource_, model_.settings);
   }
   if (!options.script.empty()) {
-    SessionScript script = loadSessionScript(options.script);
-    const bool topology = std::any_of(script.events.begin(), script.events.end(), [](const auto& e) {
-      return std::holds_alternative<TopologyEvent>(e.action);
-    });
-    if (topology)
-      scriptTopology_ = std::move(script);
-    else
-      controller_->loop().playScript(std::move(script));
+    scriptPath_ = options.script;
+    startScript(loadSessionScript(options.script), false);  // FileError: main reports it
   }
   lastFrameTime_ = rateWindowStart_ = Clock::now();
   windowReadySeconds_ = secondsSince(started_);
@@ -393,6 +387,7 @@ void SculptApp::carryOutRequests() {
       }
     }
     if (!r.loadScene.empty()) openFile(r.loadScene == "<default>" ? std::string() : r.loadScene);
+    if (!r.replayScript.empty()) replayScript(r.replayScript);
   } catch (const std::invalid_argument& error) {
     model_.toast(error.what(), true, 8.0);
   }
@@ -443,13 +438,39 @@ void SculptApp::carryOutRequests() {
   }
 }
 
+void SculptApp::startScript(SessionScript script, bool documentReady) {
+  const bool topology = std::any_of(script.events.begin(), script.events.end(), [](const auto& e) {
+    return std::holds_alternative<TopologyEvent>(e.action);
+  });
+  if (!topology) {
+    controller_->loop().playScript(std::move(script));
+    return;
+  }
+  scriptTopology_ = std::move(script);
+  if (documentReady) applyScriptTopology();  // else when the first scene arrives
+}
+
+void SculptApp::replayScript(const std::string& path) {
+  try {
+    SessionScript script = loadSessionScript(path);
+    char seconds[32];
+    std::snprintf(seconds, sizeof seconds, "%.3g s", script.duration());
+    model_.toast("replaying " + std::filesystem::path(path).filename().string() + " (" + seconds +
+                 ")");
+    scriptPath_ = path;
+    startScript(std::move(script), true);
+  } catch (const FileError& error) {
+    model_.toast(error.what(), true, 8.0);
+  }
+}
+
 void SculptApp::applyScriptTopology() {
   SessionScript script = *std::exchange(scriptTopology_, std::nullopt);
   Project edited = document_.project();
   try {
     edited.controlMesh = applyTopologyEvents(edited.controlMesh, script);
   } catch (const std::invalid_argument& error) {
-    const std::string message = options_.script + ": " + error.what();
+    const std::string message = scriptPath_ + ": " + error.what();
     std::cerr << "error: " << message << '\n';
     model_.toast(message, true, 10.0);
     return;

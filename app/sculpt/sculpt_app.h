@@ -211,11 +211,15 @@ class SculptApp {
   std::optional<PickedFace> hoverFace_, firstFace_;
   std::vector<FaceRef> boundaryFacesOfScene_;  ///< of the control mesh shown
   SceneSource lastGoodSource_;                 ///< the document's source before a load
-  // A --script with topology events: they edit the first scene's control mesh (the document
-  // starts from the edited mesh), and the rest of the script plays once that scene simulates.
+  // A script with topology events (--script, or File > Replay session script): they edit the
+  // control mesh (the document starts from the edited mesh), and the rest of the script plays
+  // once that scene simulates. Without them it plays at once.
   std::optional<SessionScript> scriptTopology_, deferredScript_;
+  std::string scriptPath_;  ///< of the script being replayed, for its messages
   bool awaitingEditedScene_ = false;
   uint64_t scriptSceneId_ = 0;
+  void startScript(SessionScript script, bool documentReady);
+  void replayScript(const std::string& path);
   void applyScriptTopology();
 
   // Recording, the timeline and export (sculpt_recording.cpp)

@@ -12,6 +12,7 @@
 #include <imgui.h>
 #include <imgui_internal.h>
 
+#include <algorithm>
 #include <filesystem>
 #include <fstream>
 #include <string>
@@ -72,6 +73,46 @@ TEST_F(FileBrowserWindow, OpensAProjectByATypedPath) {
   EXPECT_EQ(app_->document().title(), "first.sculpt");
   EXPECT_EQ(app_->model().sceneFile, first.string());
   EXPECT_EQ(app_->model().recentScenes.front(), first.string());
+}
+
+// File > Replay session script...: the browser lists the scripts, and the chosen one plays on
+// the scene shown (its paint reaches the material the view draws).
+TEST_F(FileBrowserWindow, ReplaysASessionScriptChosenInTheBrowser) {
+  open((kAssets / "block3.json").string());
+  frames(10);
+  ASSERT_TRUE(app_->sceneView().hasGeometry());
+  const auto largestYoungs = [&] {
+    const std::vector<float>& youngs = app_->sceneView().frame().cellYoungs;
+    return youngs.empty() ? 0.0f : *std::max_element(youngs.begin(), youngs.end());
+  };
+  const float before = largestYoungs();
+  const fs::path script = folder_ / "stiff_corner.json";
+  std::ofstream(script) << R"({"format": "sculpt-session", "version": 1, "events": [
+    {"t": 0.0, "type": "paint", "centre": [0.5, 0.5, 0.5], "radius": 1.0, "youngs": 3e9}]})";
+  openFileBrowser(app_->model().fileBrowser, FileBrowserUse::ReplayScript, folder_.string());
+  frames(2);
+  ASSERT_TRUE(browserShowing("Replay session script"));
+  // The script is listed under the session-script filter.
+  const std::vector<FileEntry>& entries = app_->model().fileBrowser.listing.entries;
+  EXPECT_TRUE(std::any_of(entries.begin(), entries.end(),
+                          [](const FileEntry& e) { return e.name == "stiff_corner.json"; }));
+  type("stiff_corner.json");
+  enter();
+  frames(20);
+  EXPECT_FALSE(browserShowing("Replay session script"));
+  const float after = largestYoungs();
+  std::printf("[ replay ] largest Young's modulus drawn: %.3g Pa before, %.3g Pa after\n", before,
+              after);
+  EXPECT_LT(before, 1e8f);
+  // A cell's value is its samples' mean: the brush's falloff leaves the corner cell below 3e9.
+  EXPECT_GT(after, 1e9f) << "the script's paint reached the drawn material";
+  EXPECT_LE(after, 3e9f);
+  // A missing script is one message, and the scene keeps running.
+  app_->model().requests.replayScript = (folder_ / "missing.json").string();
+  frames(2);
+  ASSERT_FALSE(app_->model().toasts.empty());
+  EXPECT_NE(app_->model().toasts.back().text.find("missing.json"), std::string::npos);
+  EXPECT_TRUE(app_->model().toasts.back().error);
 }
 
 TEST_F(FileBrowserWindow, ArrowKeysAndEnterWalkThroughFoldersToAControlMesh) {
