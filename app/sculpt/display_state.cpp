@@ -5,21 +5,15 @@
 #include <limits>
 #include <string>
 
+#include "sculpt/tool_setting_values.h"
+
 namespace sculpt::app {
 namespace {
 
-template <typename T>
-T get(const ToolSettings& settings, const std::string& key, T fallback) {
-  const auto it = settings.find(key);
-  if (it == settings.end() || !std::holds_alternative<T>(it->second)) return fallback;
-  return std::get<T>(it->second);
-}
-
 float clampedFloat(const ToolSettings& settings, const std::string& key, float lo, float hi,
                    float fallback) {
-  const double value = get(settings, key, static_cast<double>(fallback));
-  return std::isfinite(value) ? static_cast<float>(std::clamp(value, double{lo}, double{hi}))
-                              : fallback;
+  return static_cast<float>(clampFinite(settingOr(settings, key, static_cast<double>(fallback)),
+                                        double{lo}, double{hi}, double{fallback}));
 }
 
 // Sets `field` of `saved` to the command line's when that differs from the default.
@@ -53,28 +47,28 @@ void storeDisplayState(const DisplaySettings& d, ToolSettings& t) {
 DisplaySettings loadDisplayState(const ToolSettings& t) {
   const DisplaySettings defaults;
   DisplaySettings d;
-  d.method = parseInterpolationMethod(get(t, "display.method", std::string(methodName(d.method))))
+  d.method = parseInterpolationMethod(settingOr(t, "display.method", std::string(methodName(d.method))))
                  .value_or(defaults.method);
   d.gradients =
-      parseGradientScheme(get(t, "display.gradients", std::string(gradientSchemeName(d.gradients))))
+      parseGradientScheme(settingOr(t, "display.gradients", std::string(gradientSchemeName(d.gradients))))
           .value_or(defaults.gradients);
-  d.field = parseField(get(t, "display.field", std::string(fieldName(d.field))))
+  d.field = parseField(settingOr(t, "display.field", std::string(fieldName(d.field))))
                 .value_or(defaults.field);
-  d.smoothField = get(t, "display.smoothField", defaults.smoothField);
-  d.autoRange = get(t, "display.autoRange", defaults.autoRange);
+  d.smoothField = settingOr(t, "display.smoothField", defaults.smoothField);
+  d.autoRange = settingOr(t, "display.autoRange", defaults.autoRange);
   // Any finite float: the manual range is in the field's own units (Pa, J/m^3 ...).
   constexpr float kLargest = std::numeric_limits<float>::max();
   d.rangeLow = clampedFloat(t, "display.rangeLow", -kLargest, kLargest, defaults.rangeLow);
   d.rangeHigh = clampedFloat(t, "display.rangeHigh", -kLargest, kLargest, defaults.rangeHigh);
-  d.showSurface = get(t, "display.showSurface", defaults.showSurface);
-  d.flatShading = get(t, "display.flatShading", defaults.flatShading);
-  d.wireframe = get(t, "display.wireframe", defaults.wireframe);
-  d.showControlMesh = get(t, "display.showControlMesh", defaults.showControlMesh);
-  d.showCells = get(t, "display.showCells", defaults.showCells);
-  d.showGrid = get(t, "display.showGrid", defaults.showGrid);
-  d.showAxes = get(t, "display.showAxes", defaults.showAxes);
-  d.clip = get(t, "display.clip", defaults.clip);
-  const double axis = get(t, "display.clipAxis", static_cast<double>(defaults.clipAxis));
+  d.showSurface = settingOr(t, "display.showSurface", defaults.showSurface);
+  d.flatShading = settingOr(t, "display.flatShading", defaults.flatShading);
+  d.wireframe = settingOr(t, "display.wireframe", defaults.wireframe);
+  d.showControlMesh = settingOr(t, "display.showControlMesh", defaults.showControlMesh);
+  d.showCells = settingOr(t, "display.showCells", defaults.showCells);
+  d.showGrid = settingOr(t, "display.showGrid", defaults.showGrid);
+  d.showAxes = settingOr(t, "display.showAxes", defaults.showAxes);
+  d.clip = settingOr(t, "display.clip", defaults.clip);
+  const double axis = settingOr(t, "display.clipAxis", static_cast<double>(defaults.clipAxis));
   d.clipAxis = std::isfinite(axis) ? static_cast<int>(std::clamp(std::round(axis), 0.0, 2.0))
                                    : defaults.clipAxis;
   d.clipPosition = clampedFloat(t, "display.clipPosition", 0.0f, 1.0f, defaults.clipPosition);

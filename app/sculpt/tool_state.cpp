@@ -3,6 +3,8 @@
 #include <algorithm>
 #include <cmath>
 
+#include "sculpt/tool_setting_values.h"
+
 namespace sculpt::app {
 
 const char* toolName(ToolKind tool) {
@@ -63,16 +65,6 @@ MaterialBrushSettings paintBrush(const ToolState& state, double radius,
 
 namespace {
 
-template <typename T>
-T get(const ToolSettings& settings, const std::string& key, T fallback) {
-  const auto it = settings.find(key);
-  if (it == settings.end() || !std::holds_alternative<T>(it->second)) return fallback;
-  return std::get<T>(it->second);
-}
-
-double clampFinite(double value, double lo, double hi, double fallback) {
-  return std::isfinite(value) ? std::clamp(value, lo, hi) : fallback;
-}
 
 int clampIndex(double value, int count, int fallback) {
   return std::isfinite(value) && value >= 0 && value < count ? static_cast<int>(value) : fallback;
@@ -118,38 +110,38 @@ void storeToolState(const ToolState& s, ToolSettings& t) {
 
 ToolState loadToolState(const ToolSettings& t) {
   ToolState s;
-  s.tool = static_cast<ToolKind>(clampIndex(get(t, "tool.kind", 0.0), kToolCount, 0));
+  s.tool = static_cast<ToolKind>(clampIndex(settingOr(t, "tool.kind", 0.0), kToolCount, 0));
   // Before brushes were per tool, "tool.radiusPixels", "tool.strength" and "tool.falloff" were
   // every tool's: they are the fallback of each tool's own keys.
   const BrushSettings defaults;
-  const double radius = get(t, "tool.radiusPixels", static_cast<double>(defaults.radiusPixels));
-  const double strength = get(t, "tool.strength", static_cast<double>(defaults.strength));
-  const std::string falloff = get(t, "tool.falloff", std::string(falloffName(defaults.falloff)));
-  s.unifiedRadius = get(t, "tool.unifiedRadius", false);
+  const double radius = settingOr(t, "tool.radiusPixels", static_cast<double>(defaults.radiusPixels));
+  const double strength = settingOr(t, "tool.strength", static_cast<double>(defaults.strength));
+  const std::string falloff = settingOr(t, "tool.falloff", std::string(falloffName(defaults.falloff)));
+  s.unifiedRadius = settingOr(t, "tool.unifiedRadius", false);
   s.unifiedRadiusPixels = clampRadius(radius, defaults.radiusPixels);
   for (const ToolKind tool : kBrushTools) {
     BrushSettings& own = s.brushes[static_cast<size_t>(tool)];
-    own.radiusPixels = clampRadius(get(t, brushKey(tool, "radiusPixels"), radius), defaults.radiusPixels);
+    own.radiusPixels = clampRadius(settingOr(t, brushKey(tool, "radiusPixels"), radius), defaults.radiusPixels);
     own.strength = static_cast<float>(
-        clampFinite(get(t, brushKey(tool, "strength"), strength), 0, 1, defaults.strength));
+        clampFinite(settingOr(t, brushKey(tool, "strength"), strength), 0, 1, defaults.strength));
     own.falloff =
-        parseFalloff(get(t, brushKey(tool, "falloff"), falloff)).value_or(defaults.falloff);
+        parseFalloff(settingOr(t, brushKey(tool, "falloff"), falloff)).value_or(defaults.falloff);
   }
-  s.mirrorX = get(t, "tool.mirrorX", true);
-  s.mirrorY = get(t, "tool.mirrorY", false);
-  s.mirrorZ = get(t, "tool.mirrorZ", false);
-  s.keepOnRelease = get(t, "tool.keepOnRelease", false);
+  s.mirrorX = settingOr(t, "tool.mirrorX", true);
+  s.mirrorY = settingOr(t, "tool.mirrorY", false);
+  s.mirrorZ = settingOr(t, "tool.mirrorZ", false);
+  s.keepOnRelease = settingOr(t, "tool.keepOnRelease", false);
   s.pressureFraction =
-      clampFinite(get(t, "tool.pressureFraction", s.pressureFraction), kMinPressureFraction,
+      clampFinite(settingOr(t, "tool.pressureFraction", s.pressureFraction), kMinPressureFraction,
                   kMaxPressureFraction, kDefaultPressureFraction);
-  s.field = static_cast<PaintField>(clampIndex(get(t, "tool.paintField", 0.0), 3, 0));
-  s.paint.youngs = clampFinite(get(t, "tool.paintYoungs", s.paint.youngs), 1e3, 1e9, 3e7);
-  s.paint.density = clampFinite(get(t, "tool.paintDensity", s.paint.density), 1.0, 1e5, 3000);
-  s.paint.damping = clampFinite(get(t, "tool.paintDamping", s.paint.damping), 0.0, 1e5, 2000);
-  s.smoothCurve = get(t, "tool.smoothCurve", true);
+  s.field = static_cast<PaintField>(clampIndex(settingOr(t, "tool.paintField", 0.0), 3, 0));
+  s.paint.youngs = clampFinite(settingOr(t, "tool.paintYoungs", s.paint.youngs), 1e3, 1e9, 3e7);
+  s.paint.density = clampFinite(settingOr(t, "tool.paintDensity", s.paint.density), 1.0, 1e5, 3000);
+  s.paint.damping = clampFinite(settingOr(t, "tool.paintDamping", s.paint.damping), 0.0, 1e5, 2000);
+  s.smoothCurve = settingOr(t, "tool.smoothCurve", true);
   s.operation = static_cast<TopologyTool>(
-      clampIndex(get(t, "tool.topologyOperation", 0.0), kTopologyToolCount, 0));
-  s.extrudeCells = clampFinite(get(t, "tool.extrudeCells", 1.0), 0.05, 10.0, 1.0);
+      clampIndex(settingOr(t, "tool.topologyOperation", 0.0), kTopologyToolCount, 0));
+  s.extrudeCells = clampFinite(settingOr(t, "tool.extrudeCells", 1.0), 0.05, 10.0, 1.0);
   return s;
 }
 
