@@ -100,6 +100,9 @@ void writePreferencesSeeds(const fs::path& dir) {
   preferences.window = {10, 20, 800, 600, true};
   preferences.addRecentFile("/home/user/b.sculpt");
   preferences.addRecentFile("/home/user/a.sculpt");
+  preferences.brushRadii.byTool = {{"inflate", 150.0}, {"paint", 35.0}, {"pin", 80.0}};
+  preferences.brushRadii.unified = true;
+  preferences.brushRadii.unifiedPixels = 60.0;
   savePreferences(preferences, dir / "preferences.json");
 }
 
