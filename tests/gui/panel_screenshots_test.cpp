@@ -6,6 +6,7 @@
 
 #include <imgui_internal.h>
 
+#include <ostream>
 #include <string>
 
 #include "sculpt_session.h"
@@ -17,6 +18,10 @@ struct ScaleCase {
   float scale;
   int width, height;
 };
+
+void PrintTo(const ScaleCase& c, std::ostream* out) {
+  *out << "UI scale " << c.scale << " at " << c.width << "x" << c.height;
+}
 
 class PanelScreenshots : public SculptSession, public ::testing::WithParamInterface<ScaleCase> {
  protected:
