@@ -437,7 +437,7 @@ ViewRect drawPanels(AppModel& m) {
   ImVec2 min = viewport->WorkPos;
   ImVec2 max(viewport->WorkPos.x + viewport->WorkSize.x, viewport->WorkPos.y + viewport->WorkSize.y);
   if (!m.showPanels) return {min, max};
-  const float left = std::min(scaled(220), 0.25f * viewport->WorkSize.x);
+  const float left = std::min(scaled(220), 0.3f * viewport->WorkSize.x);
   const float right = std::min(scaled(320), 0.35f * viewport->WorkSize.x);
   // Two rows: the simulation's buttons and status, then recording and the timeline.
   const float bottom = 2 * ImGui::GetFrameHeightWithSpacing() + 2 * ImGui::GetStyle().WindowPadding.y;

@@ -72,7 +72,9 @@ void drawToolSettings(AppModel& m) {
   switch (t.tool) {
     case ToolKind::Pull:
       ImGui::TextWrapped("Drag on the surface. Ctrl pushes.");
-      ImGui::Checkbox("Keep spring on release", &t.keepOnRelease);
+      ImGui::Checkbox("Keep spring", &t.keepOnRelease);
+      if (ImGui::IsItemHovered())
+        ImGui::SetTooltip("The spring stays where it was when the button is released");
       break;
     case ToolKind::Inflate:
       ImGui::TextWrapped("Hold on the surface. Ctrl deflates.");

@@ -4,6 +4,7 @@
 
 #include <algorithm>
 #include <cmath>
+#include <cstring>
 
 namespace sculpt::app {
 namespace {
@@ -61,8 +62,14 @@ bool valueSlider(const char* label, ImGuiDataType type, void* value, const void*
   if (mayStartTyping) return changed;  // ImGui drew the value, centred as below
   char text[64];
   ImGui::DataTypeFormatString(text, sizeof text, type, value, format);
-  const ImVec2 size = ImGui::CalcTextSize(text);
   const float padding = ImGui::GetStyle().FramePadding.x;
+  // A narrow frame (a large UI scale on a small window) shows the number without its unit, and
+  // the whole value when hovered.
+  if (ImGui::CalcTextSize(text).x > max.x - min.x - 2.0f * padding) {
+    if (ImGui::IsItemHovered() && !ImGui::IsItemActive()) ImGui::SetTooltip("%s", text);
+    if (char* space = std::strchr(text, ' ')) *space = 0;
+  }
+  const ImVec2 size = ImGui::CalcTextSize(text);
   // Centred; a value wider than the frame starts at its left edge and is clipped at its right.
   const float x = std::max(min.x + padding, 0.5f * (min.x + max.x - size.x));
   const ImVec4 clip(min.x + padding, min.y, max.x - padding, max.y);
