@@ -164,17 +164,25 @@ PhongGpuDeformer::PhongGpuDeformer(const VolumeMesh& rest, std::span<const uint3
 }
 
 PhongGpuDeformer::~PhongGpuDeformer() {
-  const GLuint buffers[] = {cellBuffer_,           localBuffer_,           normalBuffer_,
-                            restNodesBuffer_,       frameBuffer_,
-                            feedbackBuffer_,       indexBuffer_,           neighbourRangeBuffer_,
-                            attributeNodesBuffer_, attributeWeightsBuffer_, cellFieldBuffer_,
-                            restPointBuffer_,      inverseJacobianBuffer_, vertexNodesBuffer_,
+  const GLuint buffers[] = {cellBuffer_,
+                            localBuffer_,
+                            normalBuffer_,
+                            restNodesBuffer_,
+                            frameBuffer_,
+                            feedbackBuffer_,
+                            indexBuffer_,
+                            neighbourRangeBuffer_,
+                            attributeNodesBuffer_,
+                            attributeWeightsBuffer_,
+                            cellFieldBuffer_,
+                            restPointBuffer_,
+                            inverseJacobianBuffer_,
+                            vertexNodesBuffer_,
                             nodeFieldBuffer_};
   glDeleteBuffers(static_cast<GLsizei>(std::size(buffers)), buffers);
-  const GLuint textures[] = {restNodesTexture_,      frameTexture_,
-                             attributeNodesTexture_,  attributeWeightsTexture_,
-                             cellFieldTexture_,       cellTexture_,
-                             neighbourRangeTexture_,  nodeFieldTexture_};
+  const GLuint textures[] = {restNodesTexture_,        frameTexture_,     attributeNodesTexture_,
+                             attributeWeightsTexture_, cellFieldTexture_, cellTexture_,
+                             neighbourRangeTexture_,   nodeFieldTexture_};
   glDeleteTextures(static_cast<GLsizei>(std::size(textures)), textures);
   glDeleteVertexArrays(1, &vao_);
   glDeleteVertexArrays(1, &drawVao_);
@@ -256,12 +264,12 @@ void PhongGpuDeformer::setNodeField(std::span<const float> values) {
 
 void PhongGpuDeformer::bindFrameTextures(const ShaderProgram& program) const {
   program.use();
-  const GLuint textures[] = {restNodesTexture_,       frameTexture_,     cellTexture_,
-                             neighbourRangeTexture_,   attributeNodesTexture_,
-                             attributeWeightsTexture_, cellFieldTexture_, nodeFieldTexture_};
-  const char* samplers[] = {"restNodes",       "frameNodes",     "vertexCells",
-                            "neighbourRanges", "attributeNodes", "attributeWeights",
-                            "cellField",       "nodeField"};
+  const GLuint textures[] = {restNodesTexture_,      frameTexture_,
+                             cellTexture_,           neighbourRangeTexture_,
+                             attributeNodesTexture_, attributeWeightsTexture_,
+                             cellFieldTexture_,      nodeFieldTexture_};
+  const char* samplers[] = {"restNodes",      "frameNodes",       "vertexCells", "neighbourRanges",
+                            "attributeNodes", "attributeWeights", "cellField",   "nodeField"};
   static_assert(std::size(textures) == std::size(samplers));
   for (int unit = 0; unit < static_cast<int>(std::size(textures)); ++unit) {
     glActiveTexture(static_cast<GLenum>(GL_TEXTURE0 + unit));

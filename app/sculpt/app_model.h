@@ -11,11 +11,11 @@
 #include <vector>
 
 #include "render/camera.h"
+#include "scene/scene_controller.h"
 #include "sculpt/display_settings.h"
 #include "sculpt/file_browser.h"
 #include "sculpt/navigation.h"
 #include "sculpt/record_state.h"
-#include "scene/scene_controller.h"
 #include "sculpt/scene_view.h"
 #include "sculpt/tool_state.h"
 
@@ -92,7 +92,7 @@ struct AppModel {
   Requests requests;
   ToolState tools;
   DocumentStatus document;
-  FileBrowser fileBrowser;  ///< Open, Import surface, Save As and the export path
+  FileBrowser fileBrowser;        ///< Open, Import surface, Save As and the export path
   bool openSaveAsDialog = false;  ///< Ctrl+Shift+S, or Save of an untitled project (next frame)
   bool openOpenDialog = false;    ///< Ctrl+O (next frame)
   /// The topology tool's face selection and hover, as "cell c, face f" for the panel.

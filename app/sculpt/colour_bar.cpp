@@ -40,9 +40,9 @@ void drawColourBar(FieldKind field, FieldRange range, ImVec2 viewMin, ImVec2 vie
   // line below the bar.
   const float lineHeight = ImGui::GetTextLineHeight();
   const float titleGap = 0.5f * lineHeight + 4.0f * scale;
-  const ImVec2 windowSize(contentWidth + 2.0f * padding.x,
-                          lineHeight + titleGap + barSize.y + 0.5f * lineHeight + 2.0f * padding.y +
-                              2.0f * scale);
+  const ImVec2 windowSize(
+      contentWidth + 2.0f * padding.x,
+      lineHeight + titleGap + barSize.y + 0.5f * lineHeight + 2.0f * padding.y + 2.0f * scale);
   ImGui::SetNextWindowPos(ImVec2(viewMax.x - windowSize.x - 12.0f * scale,
                                  viewMax.y - windowSize.y - 12.0f * scale));
   ImGui::SetNextWindowSize(windowSize);

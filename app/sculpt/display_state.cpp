@@ -47,11 +47,12 @@ void storeDisplayState(const DisplaySettings& d, ToolSettings& t) {
 DisplaySettings loadDisplayState(const ToolSettings& t) {
   const DisplaySettings defaults;
   DisplaySettings d;
-  d.method = parseInterpolationMethod(settingOr(t, "display.method", std::string(methodName(d.method))))
-                 .value_or(defaults.method);
-  d.gradients =
-      parseGradientScheme(settingOr(t, "display.gradients", std::string(gradientSchemeName(d.gradients))))
-          .value_or(defaults.gradients);
+  d.method =
+      parseInterpolationMethod(settingOr(t, "display.method", std::string(methodName(d.method))))
+          .value_or(defaults.method);
+  d.gradients = parseGradientScheme(
+                    settingOr(t, "display.gradients", std::string(gradientSchemeName(d.gradients))))
+                    .value_or(defaults.gradients);
   d.field = parseField(settingOr(t, "display.field", std::string(fieldName(d.field))))
                 .value_or(defaults.field);
   d.smoothField = settingOr(t, "display.smoothField", defaults.smoothField);

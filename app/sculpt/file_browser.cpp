@@ -1,9 +1,9 @@
 #include "sculpt/file_browser.h"
 
+#include <imgui.h>
+
 #include <algorithm>
 #include <cstring>
-
-#include <imgui.h>
 
 namespace sculpt::app {
 namespace fs = std::filesystem;
@@ -17,11 +17,16 @@ float scaled(float pixels) { return pixels * ImGui::GetFontSize() / 13.0f; }
 
 const char* titleOf(FileBrowserUse use) {
   switch (use) {
-    case FileBrowserUse::Open: return "Open";
-    case FileBrowserUse::ImportSurface: return "Import surface";
-    case FileBrowserUse::SaveProject: return "Save project as";
-    case FileBrowserUse::Export: return "Export recording to";
-    case FileBrowserUse::ReplayScript: return "Replay session script";
+    case FileBrowserUse::Open:
+      return "Open";
+    case FileBrowserUse::ImportSurface:
+      return "Import surface";
+    case FileBrowserUse::SaveProject:
+      return "Save project as";
+    case FileBrowserUse::Export:
+      return "Export recording to";
+    case FileBrowserUse::ReplayScript:
+      return "Replay session script";
   }
   return "File";
 }
@@ -75,7 +80,8 @@ bool goTo(FileBrowser& b, const fs::path& folder) {
   b.message = b.listing.error;
   b.selected = -1;
   for (int row = 0; row < rowCount(b); ++row)
-    if (const FileEntry* e = entryAt(b, row); e && e->folder && folder / e->name == from) b.selected = row;
+    if (const FileEntry* e = entryAt(b, row); e && e->folder && folder / e->name == from)
+      b.selected = row;
   b.scrollToSelection = b.selected >= 0;
   setField(b, b.save ? b.saveName : std::string());
   b.focusField = true;
@@ -165,8 +171,8 @@ int fieldCallback(ImGuiInputTextCallbackData* data) {
     data->SelectionStart = data->SelectionEnd = data->CursorPos = data->BufTextLen;
   };
   if (data->EventFlag == ImGuiInputTextFlags_CallbackCompletion) {
-    Completion completion = completePath(std::string(data->Buf, static_cast<size_t>(data->BufTextLen)),
-                                         b.folder, currentFilter(b));
+    Completion completion = completePath(
+        std::string(data->Buf, static_cast<size_t>(data->BufTextLen)), b.folder, currentFilter(b));
     replace(completion.text);
     b.candidates = std::move(completion.candidates);
     b.message.clear();
@@ -184,7 +190,8 @@ int fieldCallback(ImGuiInputTextCallbackData* data) {
 void folderLine(const std::string& path) {
   const float width = ImGui::GetContentRegionAvail().x;
   std::string shown = path;
-  while (shown.size() > 4 && ImGui::CalcTextSize(("..." + shown).c_str()).x > width) shown.erase(0, 1);
+  while (shown.size() > 4 && ImGui::CalcTextSize(("..." + shown).c_str()).x > width)
+    shown.erase(0, 1);
   if (shown != path) shown = "..." + shown;
   ImGui::TextUnformatted(shown.c_str());
   if (shown != path && ImGui::IsItemHovered()) ImGui::SetTooltip("%s", path.c_str());
@@ -196,7 +203,8 @@ void sideColumn(FileBrowser& b, const std::vector<std::string>& recent, ImVec2 s
   static const std::vector<Place> places = standardPlaces(fs::path(SCULPT_SOURCE_DIR) / "assets");
   for (const Place& place : places) {
     ImGui::PushID(place.path.c_str());
-    if (ImGui::Selectable(place.label.c_str(), b.folder == place.path, ImGuiSelectableFlags_DontClosePopups))
+    if (ImGui::Selectable(place.label.c_str(), b.folder == place.path,
+                          ImGuiSelectableFlags_DontClosePopups))
       goTo(b, place.path);
     if (ImGui::IsItemHovered()) ImGui::SetTooltip("%s", place.path.c_str());
     ImGui::PopID();
@@ -213,7 +221,8 @@ void sideColumn(FileBrowser& b, const std::vector<std::string>& recent, ImVec2 s
         b.message = "No longer there: " + path;
       } else if (goTo(b, file.parent_path())) {
         for (int row = 0; row < rowCount(b); ++row)
-          if (const FileEntry* e = entryAt(b, row); e && e->name == file.filename().string()) select(b, row);
+          if (const FileEntry* e = entryAt(b, row); e && e->name == file.filename().string())
+            select(b, row);
         if (b.selected < 0 || !entryAt(b, b.selected)) setField(b, path);  // filtered out: typed
       }
     }
@@ -230,11 +239,14 @@ Outcome fileTable(FileBrowser& b, ImVec2 size) {
                                 ImGuiTableFlags_BordersInnerV | ImGuiTableFlags_NoSavedSettings;
   if (!ImGui::BeginTable("entries", 3, flags, size)) return outcome;
   const float pad = 2 * ImGui::GetStyle().CellPadding.x;
-  ImGui::TableSetupColumn("Name", ImGuiTableColumnFlags_WidthStretch | ImGuiTableColumnFlags_DefaultSort);
-  ImGui::TableSetupColumn("Size", ImGuiTableColumnFlags_WidthFixed | ImGuiTableColumnFlags_PreferSortDescending,
-                          ImGui::CalcTextSize("999.9 MB").x + pad);
-  ImGui::TableSetupColumn("Modified", ImGuiTableColumnFlags_WidthFixed | ImGuiTableColumnFlags_PreferSortDescending,
-                          ImGui::CalcTextSize("0000-00-00 00:00").x + pad);
+  ImGui::TableSetupColumn("Name",
+                          ImGuiTableColumnFlags_WidthStretch | ImGuiTableColumnFlags_DefaultSort);
+  ImGui::TableSetupColumn(
+      "Size", ImGuiTableColumnFlags_WidthFixed | ImGuiTableColumnFlags_PreferSortDescending,
+      ImGui::CalcTextSize("999.9 MB").x + pad);
+  ImGui::TableSetupColumn(
+      "Modified", ImGuiTableColumnFlags_WidthFixed | ImGuiTableColumnFlags_PreferSortDescending,
+      ImGui::CalcTextSize("0000-00-00 00:00").x + pad);
   ImGui::TableSetupScrollFreeze(0, 1);
   ImGui::TableHeadersRow();
   if (ImGuiTableSortSpecs* specs = ImGui::TableGetSortSpecs(); specs && specs->SpecsDirty) {
@@ -261,7 +273,8 @@ Outcome fileTable(FileBrowser& b, ImVec2 size) {
     if (!e || e->folder) ImGui::PushStyleColor(ImGuiCol_Text, folderColour);
     const std::string label = !e ? std::string("..") : e->folder ? e->name + "/" : e->name;
     if (ImGui::Selectable(label.c_str(), b.selected == row,
-                          ImGuiSelectableFlags_SpanAllColumns | ImGuiSelectableFlags_AllowDoubleClick |
+                          ImGuiSelectableFlags_SpanAllColumns |
+                              ImGuiSelectableFlags_AllowDoubleClick |
                               ImGuiSelectableFlags_DontClosePopups)) {
       select(b, row);
       if (ImGui::IsMouseDoubleClicked(0)) activated = row;
@@ -285,7 +298,8 @@ Outcome fileTable(FileBrowser& b, ImVec2 size) {
   if (rows == 0 || (rows == 1 && hasParentRow(b))) {
     ImGui::TableNextRow();
     ImGui::TableNextColumn();
-    ImGui::TextDisabled(b.listing.error.empty() ? "(no folders or matching files)" : "(unreadable)");
+    ImGui::TextDisabled(b.listing.error.empty() ? "(no folders or matching files)"
+                                                : "(unreadable)");
   }
   b.scrollToSelection = false;
   ImGui::EndTable();
@@ -296,11 +310,14 @@ Outcome fileTable(FileBrowser& b, ImVec2 size) {
 // "Replace it?" over the browser: Yes (Y) gives the path, No (N, Escape) goes back to the list.
 std::optional<std::string> replaceQuestion(FileBrowser& b) {
   std::optional<std::string> accepted;
-  ImGui::SetNextWindowPos(ImGui::GetMainViewport()->GetCenter(), ImGuiCond_Appearing, ImVec2(0.5f, 0.5f));
-  if (!ImGui::BeginPopupModal(kReplaceId, nullptr, ImGuiWindowFlags_AlwaysAutoResize)) return accepted;
+  ImGui::SetNextWindowPos(ImGui::GetMainViewport()->GetCenter(), ImGuiCond_Appearing,
+                          ImVec2(0.5f, 0.5f));
+  if (!ImGui::BeginPopupModal(kReplaceId, nullptr, ImGuiWindowFlags_AlwaysAutoResize))
+    return accepted;
   const std::string name = fs::path(b.pendingOverwrite).filename().string();
-  ImGui::Text(name.find('#') == std::string::npos ? "%s already exists." : "Frames of %s already exist.",
-              name.c_str());
+  ImGui::Text(
+      name.find('#') == std::string::npos ? "%s already exists." : "Frames of %s already exist.",
+      name.c_str());
   ImGui::TextDisabled("%s", fs::path(b.pendingOverwrite).parent_path().c_str());
   ImGui::TextUnformatted("Replace it?");
   const bool yes = ImGui::Button("Yes, replace (Y)") || ImGui::IsKeyPressed(kKeyY, false);
@@ -336,8 +353,10 @@ void openFileBrowser(FileBrowser& b, FileBrowserUse use, const std::string& star
       break;
     case FileBrowserUse::Open:
     case FileBrowserUse::ImportSurface:
-      for (int k = 0; k < kFileKindCount; ++k) b.filters.push_back(fileFilter(static_cast<FileKind>(k)));
-      b.filter = static_cast<int>(use == FileBrowserUse::Open ? FileKind::Openable : FileKind::Surface);
+      for (int k = 0; k < kFileKindCount; ++k)
+        b.filters.push_back(fileFilter(static_cast<FileKind>(k)));
+      b.filter =
+          static_cast<int>(use == FileBrowserUse::Open ? FileKind::Openable : FileKind::Surface);
       b.saveSuffix.clear();
       break;
     case FileBrowserUse::SaveProject:
@@ -379,7 +398,8 @@ void openFileBrowser(FileBrowser& b, FileBrowserUse use, const std::string& star
   b.openRequested = true;
 }
 
-std::optional<std::string> drawFileBrowser(FileBrowser& b, const std::vector<std::string>& recentFiles) {
+std::optional<std::string> drawFileBrowser(FileBrowser& b,
+                                           const std::vector<std::string>& recentFiles) {
   if (b.openRequested) {
     b.openRequested = false;
     ImGui::OpenPopup(kPopupId);
@@ -410,7 +430,8 @@ std::optional<std::string> drawFileBrowser(FileBrowser& b, const std::vector<std
   // Places and recent files | the listing
   const float below = 3 * ImGui::GetFrameHeightWithSpacing();
   const float height = std::max(scaled(80), ImGui::GetContentRegionAvail().y - below);
-  sideColumn(b, recentFiles, ImVec2(std::min(scaled(180), 0.3f * ImGui::GetContentRegionAvail().x), height));
+  sideColumn(b, recentFiles,
+             ImVec2(std::min(scaled(180), 0.3f * ImGui::GetContentRegionAvail().x), height));
   ImGui::SameLine();
   Outcome clicked = fileTable(b, ImVec2(0, height));
   if (clicked.accepted || clicked.askReplace) outcome = clicked;
@@ -425,7 +446,8 @@ std::optional<std::string> drawFileBrowser(FileBrowser& b, const std::vector<std
     b.focusField = false;
   }
   const bool entered = ImGui::InputTextWithHint(
-      "##path", b.save ? "file name or path" : "path (Tab completes)", b.typed.data(), b.typed.size(),
+      "##path", b.save ? "file name or path" : "path (Tab completes)", b.typed.data(),
+      b.typed.size(),
       ImGuiInputTextFlags_EnterReturnsTrue | ImGuiInputTextFlags_AutoSelectAll |
           ImGuiInputTextFlags_CallbackCompletion | ImGuiInputTextFlags_CallbackAlways |
           ImGuiInputTextFlags_CallbackEdit,
@@ -446,7 +468,8 @@ std::optional<std::string> drawFileBrowser(FileBrowser& b, const std::vector<std
     for (const std::string& c : b.candidates) line += "  " + c;
     ImGui::TextDisabled("%s", line.c_str());
   } else {
-    ImGui::TextDisabled("Up/Down choose, Enter opens, Backspace goes up, Tab completes a typed path");
+    ImGui::TextDisabled(
+        "Up/Down choose, Enter opens, Backspace goes up, Tab completes a typed path");
   }
   if (ImGui::IsItemHovered() && !b.candidates.empty()) {
     std::string all;
@@ -479,7 +502,8 @@ std::optional<std::string> drawFileBrowser(FileBrowser& b, const std::vector<std
   const bool asking = !b.pendingOverwrite.empty();
   if (!asking && !outcome.accepted && !outcome.askReplace) {
     const auto key = [](ImGuiKey k) { return ImGui::IsKeyPressed(ImGui::GetKeyIndex(k)); };
-    if (entered || pressed || (!b.fieldActive && key(ImGuiKey_Enter) && !ImGui::IsAnyItemActive())) {
+    if (entered || pressed ||
+        (!b.fieldActive && key(ImGuiKey_Enter) && !ImGui::IsAnyItemActive())) {
       outcome = entered || pressed || b.typed[0] != 0 ? acceptTyped(b) : activate(b, b.selected);
       if (!outcome.accepted && !outcome.askReplace) b.focusField = true;
     } else if (key(ImGuiKey_DownArrow)) {

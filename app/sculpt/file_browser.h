@@ -22,8 +22,8 @@ struct FileBrowser {
   bool save = false;       ///< Save mode: the name may be new; an existing one asks first
   std::string saveSuffix;  ///< what saved names end with (".sculpt", "_####.obj")
   std::vector<FileFilter> filters;
-  int filter = 0;  ///< index into filters
-  bool hidden = false;  ///< show names starting with a dot
+  int filter = 0;              ///< index into filters
+  bool hidden = false;         ///< show names starting with a dot
   bool openRequested = false;  ///< opened by the next drawFileBrowser (outside any window)
 
   std::filesystem::path folder;  ///< absolute; kept between openings

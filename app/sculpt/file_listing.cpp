@@ -54,7 +54,8 @@ Pattern patternOf(const std::string& name) {
 bool matchesPattern(const Pattern& p, const std::string& name) {
   if (name.size() < p.before.size() + p.after.size() + 1) return false;
   if (name.compare(0, p.before.size(), p.before) != 0 || !endsWith(name, p.after)) return false;
-  const std::string digits = name.substr(p.before.size(), name.size() - p.before.size() - p.after.size());
+  const std::string digits =
+      name.substr(p.before.size(), name.size() - p.before.size() - p.after.size());
   return digits.size() >= p.count &&
          std::all_of(digits.begin(), digits.end(), [](char c) { return c >= '0' && c <= '9'; });
 }
@@ -64,13 +65,20 @@ bool matchesPattern(const Pattern& p, const std::string& name) {
 FileFilter fileFilter(FileKind kind) {
   switch (kind) {
     case FileKind::Openable:
-      return {"Openable (.sculpt .json .obj .gltf .glb)", {".sculpt", ".json", ".obj", ".gltf", ".glb"}};
-    case FileKind::Project: return {"Projects (.sculpt)", {".sculpt"}};
-    case FileKind::ControlMesh: return {"Control meshes (.json)", {".json"}};
-    case FileKind::Surface: return {"Surfaces (.obj .gltf .glb)", {".obj", ".gltf", ".glb"}};
-    case FileKind::TetMesh: return {"Tet meshes (.vtk .msh .node/.ele)", {".vtk", ".msh", ".node", ".ele"}};
-    case FileKind::Script: return {"Session scripts (.json)", {".json"}};
-    case FileKind::All: break;
+      return {"Openable (.sculpt .json .obj .gltf .glb)",
+              {".sculpt", ".json", ".obj", ".gltf", ".glb"}};
+    case FileKind::Project:
+      return {"Projects (.sculpt)", {".sculpt"}};
+    case FileKind::ControlMesh:
+      return {"Control meshes (.json)", {".json"}};
+    case FileKind::Surface:
+      return {"Surfaces (.obj .gltf .glb)", {".obj", ".gltf", ".glb"}};
+    case FileKind::TetMesh:
+      return {"Tet meshes (.vtk .msh .node/.ele)", {".vtk", ".msh", ".node", ".ele"}};
+    case FileKind::Script:
+      return {"Session scripts (.json)", {".json"}};
+    case FileKind::All:
+      break;
   }
   return {"All files", {}};
 }
@@ -87,10 +95,10 @@ FolderListing listFolder(const fs::path& folder, const FileFilter& filter, bool 
   std::error_code error;
   fs::directory_iterator it(folder, error);
   if (error) {
-    listing.error = (error == std::errc::no_such_file_or_directory ? "No such folder: "
-                                                                    : "Cannot read ") +
-                    folder.string() +
-                    (error == std::errc::no_such_file_or_directory ? "" : ": " + error.message());
+    listing.error =
+        (error == std::errc::no_such_file_or_directory ? "No such folder: " : "Cannot read ") +
+        folder.string() +
+        (error == std::errc::no_such_file_or_directory ? "" : ": " + error.message());
     return listing;
   }
   for (; it != fs::directory_iterator(); it.increment(error)) {
@@ -148,7 +156,8 @@ std::string humanDate(std::time_t time) {
 
 fs::path parentFolder(const fs::path& path) {
   fs::path normal = path.lexically_normal();
-  if (normal.has_relative_path() && !normal.has_filename()) normal = normal.parent_path();  // "a/b/"
+  if (normal.has_relative_path() && !normal.has_filename())
+    normal = normal.parent_path();  // "a/b/"
   const fs::path parent = normal.parent_path();
   return parent.empty() ? normal : parent;
 }
@@ -166,7 +175,8 @@ fs::path resolveTyped(const std::string& typed, const fs::path& folder) {
   return path;
 }
 
-Completion completePath(const std::string& typed, const fs::path& folder, const FileFilter& filter) {
+Completion completePath(const std::string& typed, const fs::path& folder,
+                        const FileFilter& filter) {
   Completion result{typed, {}};
   const size_t slash = typed.find_last_of('/');
   const std::string head = slash == std::string::npos ? std::string() : typed.substr(0, slash + 1);
@@ -188,14 +198,16 @@ Completion completePath(const std::string& typed, const fs::path& folder, const 
     if (matches.front()->folder) result.text += '/';
     return result;
   }
-  for (const FileEntry* entry : matches) result.candidates.push_back(entry->name + (entry->folder ? "/" : ""));
+  for (const FileEntry* entry : matches)
+    result.candidates.push_back(entry->name + (entry->folder ? "/" : ""));
   return result;
 }
 
 std::string withSuffix(const std::string& path, const std::string& suffix) {
   if (suffix.empty() || endsWith(path, suffix)) return path;
   std::string base = path;
-  const size_t dot = suffix.find_last_of('.');  // (".sculpt" alone is a name without extension to std::filesystem)
+  const size_t dot =
+      suffix.find_last_of('.');  // (".sculpt" alone is a name without extension to std::filesystem)
   const std::string extension = dot == std::string::npos ? std::string() : suffix.substr(dot);
   const size_t slash = base.find_last_of('/');
   const size_t nameStart = slash == std::string::npos ? 0 : slash + 1;
@@ -205,7 +217,8 @@ std::string withSuffix(const std::string& path, const std::string& suffix) {
   const Pattern pattern = patternOf(suffix);
   if (pattern.count > 0) {  // "walk_0003" (a file of the sequence) -> "walk"
     size_t digits = base.size();
-    while (digits > nameStart && std::isdigit(static_cast<unsigned char>(base[digits - 1]))) --digits;
+    while (digits > nameStart && std::isdigit(static_cast<unsigned char>(base[digits - 1])))
+      --digits;
     if (digits < base.size() && base.size() - digits >= pattern.count &&
         endsWith(base.substr(0, digits), pattern.before) &&
         digits - pattern.before.size() > nameStart)
@@ -220,7 +233,8 @@ bool targetExists(const fs::path& path) {
   const Pattern pattern = patternOf(name);
   if (pattern.count == 0) return fs::exists(path, ignored);
   const fs::path folder = path.has_parent_path() ? path.parent_path() : fs::path(".");
-  for (fs::directory_iterator it(folder, ignored), end; !ignored && it != end; it.increment(ignored))
+  for (fs::directory_iterator it(folder, ignored), end; !ignored && it != end;
+       it.increment(ignored))
     if (matchesPattern(pattern, it->path().filename().string())) return true;
   return false;
 }

@@ -27,7 +27,7 @@ bool passes(const FileFilter& filter, const std::string& name);
 struct FileEntry {
   std::string name;
   bool folder = false;
-  uint64_t size = 0;       ///< bytes; 0 for a folder
+  uint64_t size = 0;  ///< bytes; 0 for a folder
   std::time_t modified = 0;
 };
 

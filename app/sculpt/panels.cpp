@@ -50,8 +50,9 @@ void menuBar(AppModel& m) {
     if (ImGui::MenuItem("Replay session script..."))
       openFileBrowser(m.fileBrowser, FileBrowserUse::ReplayScript, std::string());
     if (ImGui::IsItemHovered())
-      ImGui::SetTooltip("Plays a script's pulls, paint, pins and inflation on the scene shown "
-                        "(docs/file-formats.md); its topology events edit the cage first.");
+      ImGui::SetTooltip(
+          "Plays a script's pulls, paint, pins and inflation on the scene shown "
+          "(docs/file-formats.md); its topology events edit the cage first.");
     if (ImGui::MenuItem("Export recording...", nullptr, false,
                         m.record.hasTake && !m.record.recording))
       m.exportDialog.show = true;
@@ -145,10 +146,18 @@ void dialogs(AppModel& m) {
   if (const std::optional<std::string> path = drawFileBrowser(m.fileBrowser, m.recentScenes)) {
     switch (m.fileBrowser.use) {
       case FileBrowserUse::Open:
-      case FileBrowserUse::ImportSurface: r.loadScene = *path; break;
-      case FileBrowserUse::SaveProject: r.saveAs = *path; break;
-      case FileBrowserUse::Export: setExportPath(m.exportDialog, *path); break;
-      case FileBrowserUse::ReplayScript: r.replayScript = *path; break;
+      case FileBrowserUse::ImportSurface:
+        r.loadScene = *path;
+        break;
+      case FileBrowserUse::SaveProject:
+        r.saveAs = *path;
+        break;
+      case FileBrowserUse::Export:
+        setExportPath(m.exportDialog, *path);
+        break;
+      case FileBrowserUse::ReplayScript:
+        r.replayScript = *path;
+        break;
     }
   }
   if (m.document.closePrompt) ImGui::OpenPopup("Unsaved changes");
@@ -238,8 +247,8 @@ void scenePanel(AppModel& m) {
     if (ImGui::IsItemHovered())
       ImGui::SetTooltip("Simulation level: elements live on the level-K cells (x8 per level)");
     if (!m.controlMeshScene)
-      rebuild |= valueSliderDouble("Cage cells", &s.cageCellsAcross, kCageMin, kCageMax,
-                                   "%.0f across");
+      rebuild |=
+          valueSliderDouble("Cage cells", &s.cageCellsAcross, kCageMin, kCageMax, "%.0f across");
     else
       rebuild |= valueSliderInt("Render level", &s.renderLevel, 1, 5);
     if (rebuild && !ImGui::IsItemActive()) r.applySettings = true;
@@ -248,8 +257,8 @@ void scenePanel(AppModel& m) {
   if (ImGui::CollapsingHeader("Material", ImGuiTreeNodeFlags_DefaultOpen)) {
     bool changed = false;
     changed |= logValueSlider("Young's modulus", &s.material.youngs, 1e3, 1e9, "%.3g Pa");
-    changed |= valueSliderDouble("Poisson ratio", &s.material.poisson, kPoissonMin, kPoissonMax,
-                                 "%.3f");
+    changed |=
+        valueSliderDouble("Poisson ratio", &s.material.poisson, kPoissonMin, kPoissonMax, "%.3f");
     changed |= logValueSlider("Density", &s.material.density, 1.0, 1e5, "%.4g kg/m^3");
     changed |= logValueSlider("Damping", &s.material.damping, 0.01, 1e5, "%.3g kg/(m^3 s)");
     if (changed) r.applySettings = true;
@@ -314,8 +323,9 @@ void displayPanel(AppModel& m) {
     ImGui::SameLine();
     ImGui::RadioButton("Per cell", &perCell, 1);
     if (ImGui::IsItemHovered())
-      ImGui::SetTooltip("Each level-K cell in one flat colour, its element's mean: to inspect\n"
-                        "the cells. Smooth interpolates node values, the cells' volume-weighted means.");
+      ImGui::SetTooltip(
+          "Each level-K cell in one flat colour, its element's mean: to inspect\n"
+          "the cells. Smooth interpolates node values, the cells' volume-weighted means.");
     d.smoothField = perCell == 0;
   }
   if (d.field != FieldKind::None) {
@@ -467,9 +477,9 @@ void drawToasts(AppModel& m, ViewRect view) {
   const auto now = std::chrono::steady_clock::now();
   std::erase_if(m.toasts, [&](const Toast& t) { return t.until < now; });
   float y = view.min.y + scaled(10);
-  const float wrapWidth = std::max(scaled(80), std::min(scaled(420), view.max.x - view.min.x -
-                                                                         scaled(20) -
-                                                                         2.0f * ImGui::GetStyle().WindowPadding.x));
+  const float wrapWidth =
+      std::max(scaled(80), std::min(scaled(420), view.max.x - view.min.x - scaled(20) -
+                                                     2.0f * ImGui::GetStyle().WindowPadding.x));
   int index = 0;
   for (const Toast& toast : m.toasts) {
     ImGui::SetNextWindowPos(ImVec2(view.max.x - scaled(10), y), ImGuiCond_Always, ImVec2(1.0f, 0.0f));

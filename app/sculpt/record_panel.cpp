@@ -1,11 +1,11 @@
 #include "sculpt/record_panel.h"
 
+#include <imgui.h>
+
 #include <algorithm>
 #include <array>
 #include <cstdio>
 #include <string>
-
-#include <imgui.h>
 
 #include "anim/take_surface.h"
 #include "sculpt/file_browser.h"
@@ -69,9 +69,13 @@ void drawTimelineMarks(const RecordStatus& s, int lastFrame) {
 
 // (No "##" in these: ImGui would hide the rest of the label.)
 const char* const kExportFormatLabels[kExportFormatCount] = {
-    "glTF morph animation (.glb)", "Blender point cache (.pc2)", "LightWave point cache (.mdd)",
-    "OBJ sequence (name_0001.obj, ...)", "VTK sequence (name_0001.vtk, ...)",
-    "VTU + PVD (name_0001.vtu, ...)", "PNG frames of the view (name_0001.png, ...)",
+    "glTF morph animation (.glb)",
+    "Blender point cache (.pc2)",
+    "LightWave point cache (.mdd)",
+    "OBJ sequence (name_0001.obj, ...)",
+    "VTK sequence (name_0001.vtk, ...)",
+    "VTU + PVD (name_0001.vtu, ...)",
+    "PNG frames of the view (name_0001.png, ...)",
     "H.264 video of the view (.mp4)"};
 
 ExportFormat exportFormatAt(int index) { return kFormats[static_cast<size_t>(std::clamp(index, 0, kExportFormatCount - 1))]; }
@@ -189,7 +193,8 @@ void drawExportDialog(AppModel& m) {
   ImGui::SetNextItemWidth(scaled(420));
   if (ImGui::Combo("Format", &d.format, kExportFormatLabels, kExportFormatCount))
     setExportPath(d, withExportSuffix(std::string(d.path.data()), d.format));
-  const float browseWidth = ImGui::CalcTextSize("Browse...").x + 2 * ImGui::GetStyle().FramePadding.x;
+  const float browseWidth =
+      ImGui::CalcTextSize("Browse...").x + 2 * ImGui::GetStyle().FramePadding.x;
   ImGui::SetNextItemWidth(scaled(420) - browseWidth - ImGui::GetStyle().ItemInnerSpacing.x);
   ImGui::InputText("##file", d.path.data(), d.path.size());
   ImGui::SameLine(0, ImGui::GetStyle().ItemInnerSpacing.x);

@@ -183,7 +183,7 @@ void SceneView::draw(const glm::mat4& view, const glm::mat4& projection,
     render::SurfaceStyle style;
     style.flatShading = display.flatShading;
     style.wireframe = display.wireframe;
-    style.field = display.field == FieldKind::None ? render::SurfaceField::None
+    style.field = display.field == FieldKind::None           ? render::SurfaceField::None
                   : display.field == FieldKind::Displacement ? render::SurfaceField::Displacement
                   : showsNodeField_                          ? render::SurfaceField::PerNode
                                                              : render::SurfaceField::PerCell;

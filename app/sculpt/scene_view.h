@@ -5,18 +5,17 @@
 // setFrame() with each new simulation state (O(nodes) upload; O(cells) when a cell field shows).
 
 #include <cstdint>
+#include <glm/glm.hpp>
 #include <memory>
 #include <optional>
-
-#include <glm/glm.hpp>
 
 #include "embed/node_field.h"
 #include "render/line_renderer.h"
 #include "render/overlay_geometry.h"
 #include "render/phong_gpu_deformer.h"
 #include "render/slice_renderer.h"
-#include "sculpt/display_settings.h"
 #include "scene/scene_controller.h"
+#include "sculpt/display_settings.h"
 
 namespace sculpt::app {
 

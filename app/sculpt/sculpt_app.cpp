@@ -12,19 +12,19 @@
 #include <iostream>
 #include <limits>
 
+#include "project/autosave.h"
+#include "project/project_file.h"
 #include "render/image_downsample.h"
 #include "render/offscreen_target.h"
 #include "render/png_image.h"
+#include "scene/control_export.h"
+#include "scene/scene_file.h"
 #include "sculpt/app_clock.h"
 #include "sculpt/colour_bar.h"
 #include "sculpt/draw_benchmark.h"
 #include "sculpt/help_overlay.h"
 #include "sculpt/real_time_factor.h"
 #include "sculpt/ui_scale.h"
-#include "scene/control_export.h"
-#include "scene/scene_file.h"
-#include "project/autosave.h"
-#include "project/project_file.h"
 #include "tools/script_topology.h"
 #include "tools/session_script.h"
 

@@ -219,7 +219,8 @@ void SculptApp::brushStroke(const PointerResult& stroke, float x, float y, int w
     const double now = recording_->takeTime();
     if (strokeTool_ == ToolKind::Inflate) {
       const double pressure = t.pressureFraction * model_.settings.material.youngs;
-      const InflateStroke::Settings settings{radius, pressure * t.brush(ToolKind::Inflate).strength};
+      const InflateStroke::Settings settings{radius,
+                                             pressure * t.brush(ToolKind::Inflate).strength};
       tool = std::make_unique<InflateStroke>(settings);
       if (capture)
         capture->beginInflate(now, hit->rest, settings,
@@ -513,9 +514,9 @@ void SculptApp::drawToolOverlay(const ViewRect& view) {
   // writes depth too, but lies outside the box of the control points (the solid lies inside
   // their hull).
   std::optional<glm::vec3> hovered =
-      inView && cursorDepth_ < 1.0f
-          ? camera_.unproject(mouse.x - view.min.x, mouse.y - view.min.y, cursorDepth_, width, height)
-          : std::nullopt;
+      inView && cursorDepth_ < 1.0f ? camera_.unproject(mouse.x - view.min.x, mouse.y - view.min.y,
+                                                        cursorDepth_, width, height)
+                                    : std::nullopt;
   if (const Points& control = view_.frame().control; hovered && control.rows() > 0) {
     const Eigen::Vector3d slack = Eigen::Vector3d::Constant(0.01 * view_.radius());
     const Eigen::Vector3d lo = control.colwise().minCoeff().transpose() - slack;
@@ -546,9 +547,11 @@ void SculptApp::drawToolOverlay(const ViewRect& view) {
   }
   // The cursors, over the planes.
   if (isBrushTool(t.tool) && (inView || brushKey_ >= 0)) {
-    const ImVec2 centre = brushKey_ >= 0 ? ImVec2(lastDabX_ + view.min.x, lastDabY_ + view.min.y) : mouse;
+    const ImVec2 centre =
+        brushKey_ >= 0 ? ImVec2(lastDabX_ + view.min.x, lastDabY_ + view.min.y) : mouse;
     const ImU32 ring = t.tool == ToolKind::Pin ? colour(255, 90, 80) : colour(255, 255, 255, 220);
-    draw->AddCircle(centre, brush.radiusPixels, kCursorShadow, 48, 3.5f);  // shows on light surfaces
+    draw->AddCircle(centre, brush.radiusPixels, kCursorShadow, 48,
+                    3.5f);  // shows on light surfaces
     draw->AddCircle(centre, brush.radiusPixels, ring, 48, 1.5f);
     if (t.tool != ToolKind::Pin && brush.falloff != Falloff::Constant)
       draw->AddCircle(centre, brush.radiusPixels * halfWeightFraction(brush.falloff),
@@ -558,7 +561,8 @@ void SculptApp::drawToolOverlay(const ViewRect& view) {
       if (brushKeyStrength_)
         std::snprintf(text, sizeof text, "strength %.2f", brush.strength);
       else
-        std::snprintf(text, sizeof text, t.unifiedRadius ? "radius %.0f px (unified)" : "radius %.0f px",
+        std::snprintf(text, sizeof text,
+                      t.unifiedRadius ? "radius %.0f px (unified)" : "radius %.0f px",
                       brush.radiusPixels);
       drawOverlayLabel(draw, centre, brush.radiusPixels, colour(255, 255, 255), text);
     }

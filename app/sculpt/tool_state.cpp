@@ -65,7 +65,6 @@ MaterialBrushSettings paintBrush(const ToolState& state, double radius,
 
 namespace {
 
-
 int clampIndex(double value, int count, int fallback) {
   return std::isfinite(value) && value >= 0 && value < count ? static_cast<int>(value) : fallback;
 }
@@ -114,14 +113,17 @@ ToolState loadToolState(const ToolSettings& t) {
   // Before brushes were per tool, "tool.radiusPixels", "tool.strength" and "tool.falloff" were
   // every tool's: they are the fallback of each tool's own keys.
   const BrushSettings defaults;
-  const double radius = settingOr(t, "tool.radiusPixels", static_cast<double>(defaults.radiusPixels));
+  const double radius =
+      settingOr(t, "tool.radiusPixels", static_cast<double>(defaults.radiusPixels));
   const double strength = settingOr(t, "tool.strength", static_cast<double>(defaults.strength));
-  const std::string falloff = settingOr(t, "tool.falloff", std::string(falloffName(defaults.falloff)));
+  const std::string falloff =
+      settingOr(t, "tool.falloff", std::string(falloffName(defaults.falloff)));
   s.unifiedRadius = settingOr(t, "tool.unifiedRadius", false);
   s.unifiedRadiusPixels = clampRadius(radius, defaults.radiusPixels);
   for (const ToolKind tool : kBrushTools) {
     BrushSettings& own = s.brushes[static_cast<size_t>(tool)];
-    own.radiusPixels = clampRadius(settingOr(t, brushKey(tool, "radiusPixels"), radius), defaults.radiusPixels);
+    own.radiusPixels =
+        clampRadius(settingOr(t, brushKey(tool, "radiusPixels"), radius), defaults.radiusPixels);
     own.strength = static_cast<float>(
         clampFinite(settingOr(t, brushKey(tool, "strength"), strength), 0, 1, defaults.strength));
     own.falloff =

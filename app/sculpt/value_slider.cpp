@@ -11,10 +11,14 @@ namespace {
 
 double asDouble(ImGuiDataType type, const void* value) {
   switch (type) {
-    case ImGuiDataType_Float: return static_cast<double>(*static_cast<const float*>(value));
-    case ImGuiDataType_Double: return *static_cast<const double*>(value);
-    case ImGuiDataType_S32: return static_cast<double>(*static_cast<const int*>(value));
-    default: return 0.0;
+    case ImGuiDataType_Float:
+      return static_cast<double>(*static_cast<const float*>(value));
+    case ImGuiDataType_Double:
+      return *static_cast<const double*>(value);
+    case ImGuiDataType_S32:
+      return static_cast<double>(*static_cast<const int*>(value));
+    default:
+      return 0.0;
   }
 }
 
@@ -37,7 +41,8 @@ bool valueSlider(const char* label, ImGuiDataType type, void* value, const void*
   const ImGuiID id = ImGui::GetID(label);
   const bool typing = ImGui::TempInputIsActive(id);
   const bool mayStartTyping = typing || ImGui::IsMouseDoubleClicked(0) ||
-                              (g.IO.KeyCtrl && ImGui::IsMouseClicked(0)) || g.NavActivateInputId == id;
+                              (g.IO.KeyCtrl && ImGui::IsMouseClicked(0)) ||
+                              g.NavActivateInputId == id;
   const float frameWidth = ImGui::CalcItemWidth();
   ImGui::PushStyleColor(ImGuiCol_SliderGrab, IM_COL32(0, 0, 0, 0));
   ImGui::PushStyleColor(ImGuiCol_SliderGrabActive, IM_COL32(0, 0, 0, 0));
@@ -53,7 +58,7 @@ bool valueSlider(const char* label, ImGuiDataType type, void* value, const void*
   ImDrawList* draw = ImGui::GetWindowDrawList();
   const float rounding = ImGui::GetStyle().FrameRounding;
   ImVec4 fill = ImGui::GetStyleColorVec4(ImGui::IsItemActive() ? ImGuiCol_SliderGrabActive
-                                                                : ImGuiCol_SliderGrab);
+                                                               : ImGuiCol_SliderGrab);
   fill.w *= 0.55f;  // the text on top keeps its contrast
   if (t > 0.0f)
     draw->AddRectFilled(min, ImVec2(min.x + t * (max.x - min.x), max.y),

@@ -1,10 +1,9 @@
 #include "embed/node_field.h"
 
+#include <Eigen/LU>
 #include <cmath>
 #include <stdexcept>
 #include <string>
-
-#include <Eigen/LU>
 
 #include "embed/cell_coordinates.h"
 

@@ -2,6 +2,8 @@
 // the volume-weighted mean of the incident cells, each cell's share at a node being the
 // integral of the node's shape function over the cell.
 
+#include "embed/node_field.h"
+
 #include <gtest/gtest.h>
 
 #include <cmath>
@@ -9,7 +11,6 @@
 #include <vector>
 
 #include "embed/cell_coordinates.h"
-#include "embed/node_field.h"
 #include "mesh/lattice_mesh.h"
 
 namespace sculpt {
@@ -104,8 +105,7 @@ TEST(NodeField, AConstantFieldStaysExactlyConstantOnJitteredTetAndHexLattices) {
     VolumeMesh mesh = hexahedra ? hexLattice(spec) : tetLattice(spec);
     jitterLattice(mesh, spec, 0.2, 7);
     for (const float value : {3.0e7f, 1234.5f, 0.1f}) {
-      const std::vector<float> nodes =
-          nodeValues(mesh, std::vector<float>(mesh.numCells(), value));
+      const std::vector<float> nodes = nodeValues(mesh, std::vector<float>(mesh.numCells(), value));
       for (uint32_t i = 0; i < mesh.numNodes(); ++i) ASSERT_EQ(nodes[i], value) << "node " << i;
     }
   }

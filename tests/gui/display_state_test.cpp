@@ -2,13 +2,13 @@
 // every field, defaults for keys missing or of the wrong kind, clamping, and the command line's
 // switches over a project's display.
 
+#include "sculpt/display_state.h"
+
 #include <gtest/gtest.h>
 
 #include <cmath>
 #include <limits>
 #include <string>
-
-#include "sculpt/display_state.h"
 
 namespace sculpt::app {
 namespace {
@@ -63,8 +63,8 @@ TEST(DisplayState, EveryFieldSurvivesTheRoundTrip) {
 TEST(DisplayState, MissingWrongKindAndUnknownKeepTheDefaultsAndNumbersAreClamped) {
   EXPECT_TRUE(loadDisplayState({}) == DisplaySettings{}) << "a project written before the keys";
   ToolSettings t;
-  t["display.field"] = 2.0;                        // a number where a name belongs
-  t["display.method"] = std::string("cubic");      // no such method
+  t["display.field"] = 2.0;                    // a number where a name belongs
+  t["display.method"] = std::string("cubic");  // no such method
   t["display.gradients"] = true;
   t["display.smoothField"] = std::string("no");
   t["display.wireframe"] = 1.0;

@@ -258,9 +258,10 @@ TEST_F(FileBrowserWindow, ExportBrowseNamesASequenceAndAsksBeforeReplacingOne) {
   ASSERT_NE(window, nullptr);
   const ImGuiStyle& style = ImGui::GetStyle();
   const float browse = ImGui::CalcTextSize("Browse...").x + 2 * style.FramePadding.x;
-  const ImVec2 button(window->Pos.x + style.WindowPadding.x + 420.0f * ImGui::GetFontSize() / 13.0f - 0.5f * browse,
-                      window->Pos.y + window->TitleBarHeight() + style.WindowPadding.y +
-                          ImGui::GetFrameHeightWithSpacing() + 0.5f * ImGui::GetFrameHeight());
+  const ImVec2 button(
+      window->Pos.x + style.WindowPadding.x + 420.0f * ImGui::GetFontSize() / 13.0f - 0.5f * browse,
+      window->Pos.y + window->TitleBarHeight() + style.WindowPadding.y +
+          ImGui::GetFrameHeightWithSpacing() + 0.5f * ImGui::GetFrameHeight());
   drag(button, 0, 0, 1);
   release();
   pointer_ = Pointer{};

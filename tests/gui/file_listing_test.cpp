@@ -61,8 +61,8 @@ TEST_F(FileListing, FoldersComeFirstThenFilesByNameIgnoringCase) {
   fs::create_directory(dir_.path() / "Archive");
   const FolderListing listing = listFolder(dir_.path(), fileFilter(FileKind::All));
   EXPECT_TRUE(listing.error.empty());
-  EXPECT_EQ(names(listing), (std::vector<std::string>{"Archive/", "meshes/", "Alpha.json", "beta.obj",
-                                                      "zeta.sculpt"}));
+  EXPECT_EQ(names(listing), (std::vector<std::string>{"Archive/", "meshes/", "Alpha.json",
+                                                      "beta.obj", "zeta.sculpt"}));
   EXPECT_EQ(listing.entries[2].size, 2000u);
   EXPECT_EQ(listing.entries[0].size, 0u);
   EXPECT_FALSE(listing.entries[2].folder);
@@ -96,17 +96,21 @@ TEST_F(FileListing, SortingBySizeOrDateKeepsFoldersFirst) {
 }
 
 TEST_F(FileListing, FiltersTakeTheirKindsOfFileIgnoringCase) {
-  for (const char* name : {"a.sculpt", "b.json", "c.OBJ", "d.gltf", "e.glb", "f.vtk", "g.msh", "h.node",
-                           "h.ele", "i.txt", "noextension"})
+  for (const char* name : {"a.sculpt", "b.json", "c.OBJ", "d.gltf", "e.glb", "f.vtk", "g.msh",
+                           "h.node", "h.ele", "i.txt", "noextension"})
     file(name, 1);
   fs::create_directory(dir_.path() / "folder.obj");  // folders pass every filter
-  const auto listed = [&](FileKind kind) { return names(listFolder(dir_.path(), fileFilter(kind))); };
-  EXPECT_EQ(listed(FileKind::Openable), (std::vector<std::string>{"folder.obj/", "a.sculpt", "b.json",
-                                                                  "c.OBJ", "d.gltf", "e.glb"}));
+  const auto listed = [&](FileKind kind) {
+    return names(listFolder(dir_.path(), fileFilter(kind)));
+  };
+  EXPECT_EQ(
+      listed(FileKind::Openable),
+      (std::vector<std::string>{"folder.obj/", "a.sculpt", "b.json", "c.OBJ", "d.gltf", "e.glb"}));
   EXPECT_EQ(listed(FileKind::Project), (std::vector<std::string>{"folder.obj/", "a.sculpt"}));
   EXPECT_EQ(listed(FileKind::ControlMesh), (std::vector<std::string>{"folder.obj/", "b.json"}));
   EXPECT_EQ(listed(FileKind::Script), (std::vector<std::string>{"folder.obj/", "b.json"}));
-  EXPECT_EQ(listed(FileKind::Surface), (std::vector<std::string>{"folder.obj/", "c.OBJ", "d.gltf", "e.glb"}));
+  EXPECT_EQ(listed(FileKind::Surface),
+            (std::vector<std::string>{"folder.obj/", "c.OBJ", "d.gltf", "e.glb"}));
   EXPECT_EQ(listed(FileKind::TetMesh),
             (std::vector<std::string>{"folder.obj/", "f.vtk", "g.msh", "h.ele", "h.node"}));
   EXPECT_EQ(listed(FileKind::All).size(), 12u);
@@ -125,7 +129,8 @@ TEST_F(FileListing, SizesAndDatesReadAsPeopleWriteThem) {
   EXPECT_EQ(humanSize(3'000'000), "3.0 MB");
   EXPECT_EQ(humanSize(2'500'000'000ull), "2.5 GB");
   std::tm when{};
-  when.tm_year = 2026 - 1900, when.tm_mon = 11, when.tm_mday = 6, when.tm_hour = 14, when.tm_min = 3;
+  when.tm_year = 2026 - 1900, when.tm_mon = 11, when.tm_mday = 6, when.tm_hour = 14,
+  when.tm_min = 3;
   when.tm_isdst = -1;
   EXPECT_EQ(humanDate(std::mktime(&when)), "2026-12-06 14:03");  // local time both ways
 }

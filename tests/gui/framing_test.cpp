@@ -50,9 +50,10 @@ TEST_F(FramingTest, FFramesTheModelsBoundingSphereToEightyPercentOfTheShorterSid
   pointer_.x = 0.5f * (view.min.x + view.max.x), pointer_.y = 0.5f * (view.min.y + view.max.y);
   press(GLFW_KEY_F, false);
   const double framed = projectedFill(centre, radius);
-  std::printf("[ framing ] view %.0f x %.0f px: sphere fills %.3f at start, %.3f moved away, "
-              "%.3f after F\n",
-              view.max.x - view.min.x, view.max.y - view.min.y, atStart, away, framed);
+  std::printf(
+      "[ framing ] view %.0f x %.0f px: sphere fills %.3f at start, %.3f moved away, "
+      "%.3f after F\n",
+      view.max.x - view.min.x, view.max.y - view.min.y, atStart, away, framed);
   EXPECT_EQ(app_->camera().pivot(), centre);
   EXPECT_GE(framed, 0.7);
   EXPECT_LE(framed, 0.9);

@@ -73,9 +73,10 @@ TEST_F(GpuNodeField, SmoothValuesAreTheCellInterpolantOfTheNodeValuesAndPerCellT
       between += smooth[p] > 3.1e6f && smooth[p] < 2.9e8f;
       ASSERT_EQ(perCellValues[p], cellValues[cell]) << "vertex " << p;
     }
-    std::printf("[ measured ] %s: GPU smooth field within %.2e of the range of the CPU's, %d of %u "
-                "vertices between the two moduli\n",
-                hexahedra ? "hexes" : "tets", worst, between, embedding.numPoints());
+    std::printf(
+        "[ measured ] %s: GPU smooth field within %.2e of the range of the CPU's, %d of %u "
+        "vertices between the two moduli\n",
+        hexahedra ? "hexes" : "tets", worst, between, embedding.numPoints());
     EXPECT_LT(worst, 1e-6) << "float precision";
     EXPECT_GT(between, static_cast<int>(embedding.numPoints() / 10)) << "the field is smooth";
   }

@@ -3,7 +3,6 @@
 // SCULPT_SESSION_IMAGES set to a folder each state is written there as a PNG
 // (docs/images/ui-*.png were made this way and looked at).
 #include <gtest/gtest.h>
-
 #include <imgui_internal.h>
 
 #include <ostream>
@@ -88,8 +87,8 @@ TEST_P(PanelScreenshots, EveryPanelMenuAndDialog) {
   const struct {
     const char* name;
     float x;
-  } menus[] = {{"file", 17.0f}, {"edit", 61.0f}, {"view", 105.0f}, {"simulation", 150.0f},
-               {"help", 236.0f}};
+  } menus[] = {
+      {"file", 17.0f}, {"edit", 61.0f}, {"view", 105.0f}, {"simulation", 150.0f}, {"help", 236.0f}};
   for (const auto& menu : menus) {
     openMenu(menu.x);
     EXPECT_TRUE(menuOpen()) << menu.name << " menu";

@@ -59,13 +59,15 @@ TEST_F(SmoothFieldWindow, GpuValuesOnTheBunnyAreTheInterpolatedNodeValuesOfThePa
     const int count =
         cellNodeWeights(g.cellMesh.isTetrahedron(cell), g.embedding.local.row(p).transpose(), beta);
     double expected = 0.0;
-    for (int a = 0; a < count; ++a) expected += beta[a] * expectedNodes[g.cellMesh.cells.row(cell)[a]];
+    for (int a = 0; a < count; ++a)
+      expected += beta[a] * expectedNodes[g.cellMesh.cells.row(cell)[a]];
     worst = std::max(worst, std::abs(gpu[p] - expected) / 3e8);
     between += gpu[p] > 3.1e6f && gpu[p] < 2.9e8f;
   }
-  std::printf("[ measured ] bunny, %u surface vertices: GPU smooth field within %.2e of the range "
-              "of the CPU's; %zu vertices between the two moduli\n",
-              g.embedding.numPoints(), worst, between);
+  std::printf(
+      "[ measured ] bunny, %u surface vertices: GPU smooth field within %.2e of the range "
+      "of the CPU's; %zu vertices between the two moduli\n",
+      g.embedding.numPoints(), worst, between);
   EXPECT_LT(worst, 1e-6) << "float precision";
   EXPECT_GT(between, 1000u) << "the stripe's border is graded, not a step";
 
@@ -99,9 +101,10 @@ TEST_F(SmoothFieldWindow, StrainEnergyIsReconstructedEveryFrameWellUnderAMillise
   EXPECT_EQ(view.nodeFieldReconstructions(), before + 30) << "new strain energy every frame";
   std::sort(ms.begin(), ms.end());
   const SceneGeometry& g = geometry();
-  std::printf("[ measured ] node reconstruction on the default bunny (%u nodes, %u cells): median "
-              "%.3f ms, max %.3f ms over 30 frames\n",
-              g.cellMesh.numNodes(), g.cellMesh.numCells(), ms[ms.size() / 2], ms.back());
+  std::printf(
+      "[ measured ] node reconstruction on the default bunny (%u nodes, %u cells): median "
+      "%.3f ms, max %.3f ms over 30 frames\n",
+      g.cellMesh.numNodes(), g.cellMesh.numCells(), ms[ms.size() / 2], ms.back());
   EXPECT_LT(ms[ms.size() / 2], 1.0);
 }
 

@@ -32,9 +32,9 @@ struct Rgb {
 
 struct CursorCase {
   ToolKind tool;
-  Rgb colour;      ///< of the cursor's strokes where they are opaque
-  float extent;    ///< the cursor lies within this many pixels of the pointer
-  bool offModel;   ///< also drawn with the pointer over the background
+  Rgb colour;     ///< of the cursor's strokes where they are opaque
+  float extent;   ///< the cursor lies within this many pixels of the pointer
+  bool offModel;  ///< also drawn with the pointer over the background
 };
 
 void PrintTo(const CursorCase& c, std::ostream* out) { *out << toolKey(c.tool); }
@@ -53,10 +53,12 @@ class ToolCursor : public SculptSession, public ::testing::WithParamInterface<Cu
   Image shot(const std::string& name) {
     const fs::path path = folder_ / name;
     app_->headlessFrame(path.string());
-    if (!images_.empty()) fs::copy_file(path, fs::path(images_) / name, fs::copy_options::overwrite_existing);
+    if (!images_.empty())
+      fs::copy_file(path, fs::path(images_) / name, fs::copy_options::overwrite_existing);
     Image image;
     int channels = 0;
-    unsigned char* pixels = stbi_load(path.string().c_str(), &image.width, &image.height, &channels, 3);
+    unsigned char* pixels =
+        stbi_load(path.string().c_str(), &image.width, &image.height, &channels, 3);
     EXPECT_NE(pixels, nullptr) << path;
     if (pixels) {
       image.rgb.assign(pixels, pixels + 3 * image.width * image.height);
@@ -120,9 +122,11 @@ TEST_P(ToolCursor, DrawnOverTheModelNotOverAPanel) {
 
   const int onModel = cursorPixels(over, none, model, c.extent, c.colour);
   const int onBackground = cursorPixels(off, none, background, c.extent, c.colour);
-  const int nextToPanel = cursorPixels(overPanel, none, ImVec2(view.min.x, model.y), 100.0f, c.colour);
-  std::printf("[ measured ] %s cursor pixels: %d over the model, %d over the background, %d by the panel\n",
-              toolName(c.tool), onModel, onBackground, nextToPanel);
+  const int nextToPanel =
+      cursorPixels(overPanel, none, ImVec2(view.min.x, model.y), 100.0f, c.colour);
+  std::printf(
+      "[ measured ] %s cursor pixels: %d over the model, %d over the background, %d by the panel\n",
+      toolName(c.tool), onModel, onBackground, nextToPanel);
   EXPECT_GE(onModel, 40) << "the cursor is drawn at the pointer over the model";
   if (c.offModel)
     EXPECT_GE(onBackground, 40) << "the brush circle shows over the background too";
@@ -141,7 +145,8 @@ TEST_F(ToolCursor, CurveShowsWhileDrawnWithThePointAtItsEnd) {
   frames(2);
   app_->model().tools.tool = ToolKind::Curve;
   const ViewRect view = app_->viewRect();
-  const ImVec2 start(0.5f * (view.min.x + view.max.x) - 90.0f, 0.5f * (view.min.y + view.max.y) + 40.0f);
+  const ImVec2 start(0.5f * (view.min.x + view.max.x) - 90.0f,
+                     0.5f * (view.min.y + view.max.y) + 40.0f);
   hover(ImVec2(-1e6f, -1e6f));
   const Image none = shot("no-cursor-curve-drawn.png");
   drag(start, 170.0f, -90.0f, 12);
@@ -151,7 +156,8 @@ TEST_F(ToolCursor, CurveShowsWhileDrawnWithThePointAtItsEnd) {
   release();
   const Rgb cyan{80, 220, 255};
   const int atEnd = cursorPixels(drawing, none, end, 12.0f, cyan);
-  const int alongCurve = cursorPixels(drawing, none, ImVec2(start.x + 85.0f, start.y - 45.0f), 30.0f, cyan);
+  const int alongCurve =
+      cursorPixels(drawing, none, ImVec2(start.x + 85.0f, start.y - 45.0f), 30.0f, cyan);
   std::printf("[ measured ] curve being drawn: %d pixels at its end, %d around its middle\n", atEnd,
               alongCurve);
   EXPECT_GE(atEnd, 40) << "the point cursor at the pointer";

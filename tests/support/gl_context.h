@@ -33,7 +33,8 @@ class GlContextTest : public ::testing::Test {
   void SetUp() override {
     ASSERT_NE(std::getenv("DISPLAY"), nullptr)
         << "no X display: run the GUI tests under xvfb-run (scripts/test.sh does)";
-    ASSERT_TRUE(glfwInit());
+    const char* why = nullptr;
+    ASSERT_TRUE(glfwInit()) << (glfwGetError(&why), why ? why : "glfwInit failed");
     window_ = hiddenGlWindow(64, 64);
     ASSERT_NE(window_, nullptr);
   }
