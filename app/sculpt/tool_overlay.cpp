@@ -71,7 +71,8 @@ void SculptApp::drawToolOverlay(const ViewRect& view) {
     const Eigen::Vector3d p = toEigen(*hovered);
     if ((p.array() < lo.array()).any() || (p.array() > hi.array()).any()) hovered.reset();
   }
-  if ((t.tool == ToolKind::Paint || (t.tool == ToolKind::Topology && !needsTwoFaces(t.operation))) &&
+  if ((t.tool == ToolKind::Paint ||
+       (t.tool == ToolKind::Topology && !needsTwoFaces(t.operation))) &&
       (t.mirrorX || t.mirrorY || t.mirrorZ)) {
     // The symmetry planes through the rest control box's centre, as the box's mid sections.
     const Points& control = view_.geometry()->restControl;
@@ -162,7 +163,8 @@ void SculptApp::drawToolOverlay(const ViewRect& view) {
         if (v < control.rows()) points.push_back(screen(pointRow(control, v)));
       if (points.size() < 3) return;
       draw->AddConvexPolyFilled(points.data(), static_cast<int>(points.size()), fill);
-      draw->AddPolyline(points.data(), static_cast<int>(points.size()), line, ImDrawFlags_Closed, 2.5f);
+      draw->AddPolyline(points.data(), static_cast<int>(points.size()), line, ImDrawFlags_Closed,
+                        2.5f);
     };
     if (hoverFace_ && inView) outline(*hoverFace_, colour(80, 220, 255), colour(80, 220, 255, 70));
     if (firstFace_) outline(*firstFace_, colour(255, 120, 30), colour(255, 120, 30, 90));
