@@ -14,6 +14,7 @@
 #include "embed/embedded_deformer.h"
 #include "mesh/lattice_mesh.h"
 #include "render/phong_gpu_deformer.h"
+#include "support/cell_points.h"
 #include "support/gl_context.h"
 
 namespace sculpt {
@@ -37,19 +38,12 @@ TEST_F(GpuPhongDeformer, GpuAndCpuDeformersAgreeOnTetsAndHexesWithBothGradientSc
     jitterLattice(mesh, spec, 0.15, 3);
     // Points inside the cells, with random rest normals.
     std::mt19937 random(5);
-    std::uniform_real_distribution<double> uniform(0.05, 0.95);
     std::normal_distribution<double> gauss;
-    const uint32_t perCell = 6;
-    Points points(static_cast<Eigen::Index>(mesh.numCells()) * perCell, 3);
+    const Points points = test::randomPointsInCells(mesh, 6, random);
     Points normals(points.rows(), 3);
-    for (uint32_t c = 0, row = 0; c < mesh.numCells(); ++c)
-      for (uint32_t k = 0; k < perCell; ++k, ++row) {
-        Eigen::Vector3d xi(uniform(random), uniform(random), uniform(random));
-        if (mesh.isTetrahedron(c) && xi.sum() > 0.95) xi *= 0.9 / xi.sum();
-        points.row(row) = cellPoint(mesh, c, xi).transpose();
-        normals.row(row) =
-            Eigen::RowVector3d(gauss(random), gauss(random), gauss(random)).normalized();
-      }
+    for (Eigen::Index row = 0; row < normals.rows(); ++row)
+      normals.row(row) =
+          Eigen::RowVector3d(gauss(random), gauss(random), gauss(random)).normalized();
     std::vector<Eigen::Matrix3d> averageGradients;
     for (GradientScheme scheme : {GradientScheme::Average, GradientScheme::Fit}) {
       DeformerSettings settings;

@@ -14,6 +14,7 @@
 #include "embed/node_field.h"
 #include "mesh/lattice_mesh.h"
 #include "render/phong_gpu_deformer.h"
+#include "support/cell_points.h"
 #include "support/gl_context.h"
 
 namespace sculpt {
@@ -29,15 +30,7 @@ TEST_F(GpuNodeField, SmoothValuesAreTheCellInterpolantOfTheNodeValuesAndPerCellT
     VolumeMesh mesh = hexahedra ? hexLattice(spec) : tetLattice(spec);
     jitterLattice(mesh, spec, 0.15, 11);
     std::mt19937 random(3);
-    std::uniform_real_distribution<double> uniform(0.05, 0.95);
-    const uint32_t perCell = 4;
-    Points points(static_cast<Eigen::Index>(mesh.numCells()) * perCell, 3);
-    for (uint32_t c = 0, row = 0; c < mesh.numCells(); ++c)
-      for (uint32_t k = 0; k < perCell; ++k, ++row) {
-        Eigen::Vector3d xi(uniform(random), uniform(random), uniform(random));
-        if (mesh.isTetrahedron(c) && xi.sum() > 0.95) xi *= 0.9 / xi.sum();
-        points.row(row) = cellPoint(mesh, c, xi).transpose();
-      }
+    const Points points = test::randomPointsInCells(mesh, 4, random);
     const EmbeddedDeformer cpu(mesh, points, DeformerSettings{});
     const Embedding& embedding = cpu.embedding();
     std::vector<float> local;
