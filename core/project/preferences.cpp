@@ -7,6 +7,7 @@
 #include <nlohmann/json.hpp>
 #include <system_error>
 #include <type_traits>
+#include <utility>
 
 #include "io/atomic_file.h"
 #include "io/file_error.h"
@@ -38,36 +39,48 @@ bool convertsToInt(const json& value) {
 // Reads one field if present and of the right kind; otherwise keeps the default and notes it.
 class FieldReader {
  public:
-  FieldReader(const json& root, std::string& problem) : root_(root), problem_(problem) {}
+  /// `path` names the object read in messages ("brushRadii." for its fields); empty: the root.
+  FieldReader(const json& root, std::string& problem, std::string path = {})
+      : root_(root), problem_(problem), path_(std::move(path)) {}
 
+  /// True when the field was there and taken.
   template <typename T, typename Check>
-  void read(const char* key, T& out, Check valid) {
+  bool read(const char* key, T& out, Check valid) {
     const auto it = root_.find(key);
-    if (it == root_.end()) return;
+    if (it == root_.end()) return false;
     try {
       if constexpr (std::is_same_v<T, int>) {
         if (!convertsToInt(*it)) {
           notice(key);
-          return;
+          return false;
+        }
+      }
+      // nlohmann reads true as 1.0: a boolean where a number belongs is a mistake.
+      if constexpr (std::is_floating_point_v<T>) {
+        if (!it->is_number()) {
+          notice(key);
+          return false;
         }
       }
       T value = it->get<T>();
       if (valid(value)) {
         out = value;
-        return;
+        return true;
       }
     } catch (const json::exception&) {
     }
     notice(key);
+    return false;
   }
 
  private:
   void notice(const char* key) {
-    if (problem_.empty()) problem_ = std::string("\"") + key + "\" has an unusable value";
+    if (problem_.empty()) problem_ = "\"" + path_ + key + "\" has an unusable value";
   }
 
   const json& root_;
   std::string& problem_;
+  std::string path_;
 };
 
 double clampedRadius(double pixels) {
@@ -77,36 +90,26 @@ double clampedRadius(double pixels) {
 // "brushRadii": {"unified": false, "unifiedPixels": 50, "byTool": {"paint": 40, ...}}; a value of
 // the wrong kind loses only itself, a number out of range is clamped.
 void readBrushRadii(const json& object, BrushRadii& radii, std::string& problem) {
-  const auto notice = [&problem](const std::string& key) {
-    if (problem.empty()) problem = "\"brushRadii" + key + "\" has an unusable value";
-  };
   if (!object.is_object()) {
-    notice("");
+    if (problem.empty()) problem = "\"brushRadii\" has an unusable value";
     return;
   }
-  if (const auto it = object.find("unified"); it != object.end()) {
-    if (it->is_boolean())
-      radii.unified = it->get<bool>();
-    else
-      notice(".unified");
+  const auto finite = [](double v) { return std::isfinite(v); };
+  FieldReader fields(object, problem, "brushRadii.");
+  fields.read("unified", radii.unified, [](bool) { return true; });
+  fields.read("unifiedPixels", radii.unifiedPixels, finite);
+  radii.unifiedPixels = clampedRadius(radii.unifiedPixels);
+  const auto byTool = object.find("byTool");
+  if (byTool == object.end()) return;
+  if (!byTool->is_object()) {
+    if (problem.empty()) problem = "\"brushRadii.byTool\" has an unusable value";
+    return;
   }
-  if (const auto it = object.find("unifiedPixels"); it != object.end()) {
-    if (it->is_number())
-      radii.unifiedPixels = clampedRadius(it->get<double>());
-    else
-      notice(".unifiedPixels");
-  }
-  if (const auto it = object.find("byTool"); it != object.end()) {
-    if (!it->is_object()) {
-      notice(".byTool");
-      return;
-    }
-    for (const auto& item : it->items()) {
-      if (item.value().is_number())
-        radii.byTool[item.key()] = clampedRadius(item.value().get<double>());
-      else
-        notice(".byTool." + item.key());
-    }
+  FieldReader tools(*byTool, problem, "brushRadii.byTool.");
+  for (const auto& item : byTool->items()) {
+    double pixels = 0;
+    if (tools.read(item.key().c_str(), pixels, finite))
+      radii.byTool[item.key()] = clampedRadius(pixels);
   }
 }
 

@@ -164,6 +164,15 @@ TEST(ToolBrush, PreferencesMissingBadOrOutOfRangeRadii) {
   EXPECT_NE(loaded.warning.find("\"brushRadii\" has an unusable value"), std::string::npos);
   EXPECT_EQ(loaded.preferences.brushRadii, BrushRadii{});
   EXPECT_EQ(loaded.preferences.uiScale, 2.0) << "one bad value loses only itself";
+
+  // A boolean where a number belongs (JSON libraries read true as 1) is of the wrong kind too.
+  writeFileAtomically(
+      path, head + R"(, "brushRadii": {"unifiedPixels": true, "byTool": {"pin": false}}})");
+  loaded = loadPreferences(path);
+  EXPECT_NE(loaded.warning.find("\"brushRadii.unifiedPixels\" has an unusable value"),
+            std::string::npos)
+      << loaded.warning;
+  EXPECT_EQ(loaded.preferences.brushRadii, BrushRadii{});
 }
 
 // In the window: the [ and ] keys change the current tool's radius only.
