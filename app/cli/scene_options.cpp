@@ -2,24 +2,26 @@
 
 #include <filesystem>
 #include <iostream>
-#include <variant>
 
 #include "cli/fem_options.h"
 #include "project/project_file.h"
+#include "tools/script_topology.h"
 
 namespace sculpt::cli {
 
 CliScene cliSceneFor(const CliArgs& args, const std::string& file, const char* command) {
-  for (const char* option : {"trilinear", "E", "nu", "density", "damping", "fix", "force", "gravity"})
+  for (const char* option :
+       {"trilinear", "E", "nu", "density", "damping", "fix", "force", "gravity"})
     if (args.has(option))
       throw UsageError(std::string("--") + option +
                        " is for control meshes; a scene brings its own (save them in its project)");
   CliScene scene;
   scene.source = file == kDefaultSceneName ? SceneSource{} : sceneSourceFor(file);
   if (isProjectPath(file)) {
-    ProjectScene project = projectScene(loadProject(file), file,
-                                        std::filesystem::path(file).filename().string(), scene.settings);
-    for (const std::string& warning : project.warnings) std::cerr << command << ": " << warning << '\n';
+    ProjectScene project = projectScene(
+        loadProject(file), file, std::filesystem::path(file).filename().string(), scene.settings);
+    for (const std::string& warning : project.warnings)
+      std::cerr << command << ": " << warning << '\n';
     scene.source = std::move(project.source);
     scene.settings = project.settings;
   }
@@ -34,11 +36,9 @@ CliScene cliSceneFor(const CliArgs& args, const std::string& file, const char* c
     if (args.has("dt")) settings.timeStep = given.timeStep;
   }
   if (args.has("script")) scene.script = loadSessionScript(args.requiredValue("script"));
-  if (scene.script)
-    for (const ScriptEvent& event : scene.script->events)
-      if (std::holds_alternative<TopologyEvent>(event.action))
-        throw UsageError(args.requiredValue("script") +
-                         ": topology events edit a control mesh; run them on the .json file");
+  if (scene.script && hasTopologyEvents(*scene.script))
+    throw UsageError(args.requiredValue("script") +
+                     ": topology events edit a control mesh; run them on the .json file");
   return scene;
 }
 

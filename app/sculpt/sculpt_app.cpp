@@ -439,10 +439,7 @@ void SculptApp::carryOutRequests() {
 }
 
 void SculptApp::startScript(SessionScript script, bool documentReady) {
-  const bool topology = std::any_of(script.events.begin(), script.events.end(), [](const auto& e) {
-    return std::holds_alternative<TopologyEvent>(e.action);
-  });
-  if (!topology) {
+  if (!hasTopologyEvents(script)) {
     controller_->loop().playScript(std::move(script));
     return;
   }

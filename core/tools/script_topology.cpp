@@ -1,11 +1,19 @@
 #include "tools/script_topology.h"
 
+#include <algorithm>
 #include <stdexcept>
+#include <variant>
 
 #include "mesh/topology.h"
 #include "subdiv/refinement_cost.h"
 
 namespace sculpt {
+
+bool hasTopologyEvents(const SessionScript& script) {
+  return std::any_of(script.events.begin(), script.events.end(), [](const ScriptEvent& event) {
+    return std::holds_alternative<TopologyEvent>(event.action);
+  });
+}
 
 CellComplex applyTopologyEvents(const CellComplex& mesh, SessionScript& script,
                                 int simulationLevel) {

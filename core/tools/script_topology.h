@@ -9,6 +9,9 @@
 
 namespace sculpt {
 
+/// Whether the script edits the control mesh (has topology events).
+bool hasTopologyEvents(const SessionScript& script);
+
 /// Applies the script's topology events to `mesh` in file order and removes them from the script
 /// (what remains can be given to ScriptPlayer). Throws std::invalid_argument naming the event,
 /// e.g. "events[0] (topology extrude): face 0 of cell 13 is not on the boundary.", leaving the
