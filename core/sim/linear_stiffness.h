@@ -2,7 +2,8 @@
 // An assembled stand-in for the stiffness, used to precondition the matrix-free solves: the
 // exact rest stiffness of every trilinear and pyramid element, and for each tricubic element the
 // trilinear hexahedron on its cell's 8 corner nodes (spectrally close: both discretise the same
-// elasticity on the same lattice). Reduced to the control points as (A x I3)^T K (A x I3),
+// elasticity on the same lattice), integrated at points near the cell centre, where it is closest
+// to the smoother B-spline element. Reduced to the control points as (A x I3)^T K (A x I3),
 // computed on 3x3 node blocks.
 
 #include <span>
