@@ -25,7 +25,8 @@ namespace sculpt::cli {
 
 const std::vector<OptionSpec> kFemBenchOptions = {
     {"integrator", true}, {"model", true},       {"steps", true},
-    {"dt", true},         {"paint-every", true}, {"cage", true}};
+    {"dt", true},         {"paint-every", true}, {"cage", true},
+    {"fresh-factor", false}, {"trace", false}};
 
 namespace {
 
@@ -152,6 +153,8 @@ uint32_t fixedCount(const Simulator& simulator) {
 struct BenchRun {
   int steps = 0;
   int paintEvery = 0;
+  bool freshFactor = false;
+  bool trace = false;
   std::string levels;
   double setupMs = 0;
 };
@@ -163,7 +166,8 @@ int benchAndPrint(Simulator& simulator, const BenchRun& run, std::optional<doubl
   std::cout << "threads=" << workerCount() << " levels=" << run.levels
             << " integrator=" << integratorName(settings.integrator) << " dt=" << settings.timeStep
             << " steps=" << run.steps << " warmup=" << FemBenchOptions{}.warmupSteps
-            << " paint_every=" << run.paintEvery << '\n'
+            << " paint_every=" << run.paintEvery
+            << (run.freshFactor ? " fresh_factor=1" : "") << '\n'
             << "setup_ms=" << ms(run.setupMs) << " control_points=" << model.numControlPoints()
             << " nodes=" << model.numNodes() << " fixed=" << fixedCount(simulator) << '\n';
   std::cout.flush();
@@ -171,6 +175,8 @@ int benchAndPrint(Simulator& simulator, const BenchRun& run, std::optional<doubl
   FemBenchOptions options;
   options.steps = run.steps;
   options.paintEvery = run.paintEvery;
+  options.freshFactor = run.freshFactor;
+  options.trace = run.trace;
   options.firstStepMs = firstStepMs;
   const FemBenchFigures f = runFemBench(simulator, options, std::cerr);
 
@@ -288,6 +294,7 @@ FemBenchFigures runFemBench(Simulator& simulator, const FemBenchOptions& options
     if (painter && stepIndex % options.paintEvery == 0) {
       painter->paintNext();
       ++dabs;
+      if (options.freshFactor) simulator.refactorPreconditioner();
     }
   };
 
@@ -314,6 +321,9 @@ FemBenchFigures runFemBench(Simulator& simulator, const FemBenchOptions& options
     const Clock::time_point start = Clock::now();
     const StepReport report = step();
     samples.push_back(millisecondsSince(start));
+    if (options.trace)
+      err << "step=" << i << " ms=" << ms(samples.back()) << " cg_iterations=" << report.iterations
+          << " elastic_pass_ms=" << ms(passSamples.back()) << '\n';
     iterations += report.iterations;
     figures.failed = figures.failed || !report.ok;
   }
@@ -343,6 +353,10 @@ int benchFemCommand(const CliArgs& args, std::string& file) {
   BenchRun run;
   run.steps = args.intValue("steps", 100, 1, 1'000'000);
   run.paintEvery = args.intValue("paint-every", 0, 1, 1'000'000);
+  run.freshFactor = args.has("fresh-factor");
+  run.trace = args.has("trace");
+  if (run.freshFactor && run.paintEvery == 0)
+    throw UsageError("--fresh-factor refactors after each dab: it needs --paint-every");
   file = args.positional()[1];
   if (lowerExtension(file) == ".json") return benchControlMesh(args, file, run);
   return benchScene(args, file, run);

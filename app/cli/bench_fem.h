@@ -17,6 +17,12 @@ struct FemBenchOptions {
   int steps = 100;       ///< measured steps
   int warmupSteps = 3;   ///< untimed steps after the first one
   int paintEvery = 0;    ///< a stiffness dab before every N-th warm-up and measured step; 0: none
+  /// After each dab, outside the timing, a new preconditioner factor for the new materials
+  /// (Simulator::refactorPreconditioner): steps free of the factor's age, for comparison.
+  bool freshFactor = false;
+  /// Writes one line per measured step to the error stream: its time, CG iterations and the
+  /// elastic pass timed before it.
+  bool trace = false;
   /// The first step's time when the caller took that step already (a scene's build does);
   /// none: the benchmark takes and times it.
   std::optional<double> firstStepMs;

@@ -65,6 +65,8 @@ const PreconditionerStats& Simulator::preconditionerStats() const {
   return preconditioner_->stats();
 }
 
+void Simulator::refactorPreconditioner() { preconditioner_->refactor(model_); }
+
 std::string settingsProblem(const SimulationSettings& s) {
   if (!(s.timeStep > 0) || !std::isfinite(s.timeStep))
     return "time step " + shortNumber(s.timeStep) + " s must be positive and finite";

@@ -101,6 +101,10 @@ class Simulator {
   StaticReport solveStatic(double tolerance = 1e-9, int maxNewtonIterations = 40);
 
   const PreconditionerStats& preconditionerStats() const;
+  /// Refactors the implicit solve's preconditioner for the current materials and pins now,
+  /// outside any step (nothing before the first implicit step). A benchmark's reference: steps
+  /// with a factor that knows every edit, against the rescaled factor painting normally gets.
+  void refactorPreconditioner();
 
   double kineticEnergy() const;  ///< 1/2 v^T M~ v
   double elasticEnergy();        ///< with rotations of the current state

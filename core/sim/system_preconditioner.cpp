@@ -234,6 +234,15 @@ bool SystemPreconditioner::update(const FemModel& model, double massScale, doubl
   return factor_->valid;
 }
 
+void SystemPreconditioner::refactor(const FemModel& model) {
+  if (!factor_) return;
+  if (pending_.valid()) pending_.wait();
+  pending_ = {};
+  const double* s = factor_->scales;
+  adopt(makeFactor(model, s[0], s[1], s[2], freeDofs_));
+  rescale(model, freeDofs_);
+}
+
 void SystemPreconditioner::rescale(const FemModel& model, const std::vector<int>& freeDofs) {
   freeDofs_ = freeDofs;
   appliedMaterialVersion_ = model.materialVersion();

@@ -47,6 +47,10 @@ class SystemPreconditioner {
   /// as long). update() takes them if the materials (and, for the analysis, the free
   /// coordinates) have not changed since.
   void prepareFirstFactor(const FemModel& model, const std::vector<int>& freeDofs);
+  /// A new factor for the model's current materials and the last update()'s scales and free
+  /// coordinates, made now (a factor pending on the worker is dropped). Nothing before the
+  /// first update().
+  void refactor(const FemModel& model);
   /// z ~ S^-1 r on the free coordinates given to the last update().
   void apply(const Eigen::VectorXd& r, Eigen::VectorXd& z) const;
   /// The CG iterations the solve after the last update() took: the measure of the rescaled

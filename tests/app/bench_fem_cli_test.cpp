@@ -118,6 +118,35 @@ TEST_F(BenchFemCliTest, BenchFemPaintEveryPaintsDeterministicDabs) {
       << every.out;
 }
 
+TEST_F(BenchFemCliTest, BenchFemTracesStepsAndRefactorsForEveryDabWhenAsked) {
+  CliResult stale, fresh;
+  const std::map<std::string, double> a =
+      bench(kBlock + " --steps 5 --paint-every 1 --trace", &stale);
+  const std::map<std::string, double> b =
+      bench(kBlock + " --steps 5 --paint-every 1 --fresh-factor --trace", &fresh);
+  EXPECT_NE(fresh.out.find(" paint_every=1 fresh_factor=1\n"), std::string::npos) << fresh.out;
+  // One trace line per measured step; their iterations average to the last line's figure.
+  for (const auto& [result, figures] : {std::pair{&stale, &a}, std::pair{&fresh, &b}}) {
+    std::istringstream err(result->err);
+    int lines = 0;
+    double iterations = 0;
+    for (std::string line; std::getline(err, line);) {
+      if (line.rfind("step=", 0) != 0) continue;
+      const std::map<std::string, double> step = numbersOf(keyValues(line));
+      EXPECT_EQ(step.at("step"), lines) << line;
+      EXPECT_GT(step.at("ms"), 0.0) << line;
+      EXPECT_GT(step.at("elastic_pass_ms"), 0.0) << line;
+      iterations += step.at("cg_iterations");
+      ++lines;
+    }
+    EXPECT_EQ(lines, 5) << result->err;
+    EXPECT_NEAR(iterations / 5, figures->at("cg_iterations"), 0.051);
+  }
+  // A factor that knows every dab serves the solve at least as well as the rescaled one.
+  EXPECT_LE(b.at("cg_iterations"), a.at("cg_iterations"));
+  expectBadInput("bench fem " + kBlock + " --steps 2 --fresh-factor", "needs --paint-every");
+}
+
 TEST_F(BenchFemCliTest, BenchFemRunsAScene) {
   CliResult result;
   const std::map<std::string, double> v =
