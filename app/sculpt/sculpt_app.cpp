@@ -228,6 +228,8 @@ void SculptApp::syncScene() {
       model_.toast(latest_.lastStep.message, !latest_.lastStep.ok);
     model_.status.lastStepMessage = latest_.lastStep.message;
   }
+  // The strain energy costs the simulation an element pass a step: only while it is shown.
+  controller_->loop().setStrainEnergyShown(model_.display.field == FieldKind::StrainEnergy);
   stylus_.attach(controller_->loop(), view_.sharedGeometry(), controller_->settings(),
                  latest_.physicsReady);
   stylus_.setView(camera_);

@@ -300,13 +300,23 @@ void ScenePhysics::updateState() {
   surfaceMap_->cellNodesFromDisplacement(displacement, nodes_);
   applyNodeGradientStencil(geometry_->gradientStencil(kDefaultGradientScheme), nodes_, gradients_);
   picker_.reset();
-  // Strain energy density with the rotations of this state (as Simulator::elasticEnergy).
-  ElasticKernel& elastic = model_->elastic();
-  elastic.updateRotations(femNodes_);
-  elastic.elementEnergies(femNodes_, elementEnergy_);
+  // The rotations of this state (the next step's warm start, and the strain energy's frames).
+  model_->elastic().updateRotations(femNodes_);
+  strainEnergyStale_ = true;
+  if (strainEnergyWanted_) findStrainEnergy();
+}
+
+void ScenePhysics::findStrainEnergy() const {
+  model_->elastic().elementEnergies(femNodes_, elementEnergy_);
   elementEnergyDensity_.resize(elementEnergy_.size());
   for (size_t e = 0; e < elementEnergy_.size(); ++e)
     elementEnergyDensity_[e] = elementEnergy_[e] / elementVolume_[e];
+  strainEnergyStale_ = false;
+}
+
+const std::vector<double>& ScenePhysics::elementStrainEnergyDensity() const {
+  if (strainEnergyStale_) findStrainEnergy();
+  return elementEnergyDensity_;
 }
 
 void ScenePhysics::fillFrame(SceneFrame& frame) const {
@@ -316,7 +326,8 @@ void ScenePhysics::fillFrame(SceneFrame& frame) const {
   frame.gradients = gradients_;
   frame.control = simulator_->positions();
   cellMaterialFields(frame.cellYoungs, frame.cellDensity, frame.cellDamping);
-  toCells(g, elementEnergyDensity_, frame.cellStrainEnergy);
+  if (strainEnergyWanted_) toCells(g, elementStrainEnergyDensity(), frame.cellStrainEnergy);
+  else frame.cellStrainEnergy.assign(g.cellElement.size(), 0.0f);
   frame.simulatedTime = simulatedTime();
   frame.stepMs = lastStepMs_;
   frame.lastStep = lastStep_;

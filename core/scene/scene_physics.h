@@ -103,11 +103,16 @@ class ScenePhysics : private ToolContext {
   /// Applies what can change live (material, integrator, time step, gravity). Returns a sentence
   /// when a setting is invalid (nothing is changed then).
   std::string applyLive(const SceneSettings& settings);
-  /// Fills `frame` with the current state (all but version).
+  /// Fills `frame` with the current state (all but version); its strain energy only while it
+  /// is wanted (zeros otherwise).
   void fillFrame(SceneFrame& frame) const;
+  /// Whether each step also finds the strain energy density for the frames: an element pass,
+  /// about a tenth of a step, spent only while the field is on show. Off at first.
+  void setStrainEnergyWanted(bool wanted) { strainEnergyWanted_ = wanted; }
 
-  /// Per FEM element: strain energy density (J/m^3) in the current state and rest volume (m^3).
-  const std::vector<double>& elementStrainEnergyDensity() const { return elementEnergyDensity_; }
+  /// Per FEM element: strain energy density (J/m^3) in the current state (found now if the steps
+  /// did not) and rest volume (m^3).
+  const std::vector<double>& elementStrainEnergyDensity() const;
   const std::vector<double>& elementVolume() const { return elementVolume_; }
   /// Per cell-mesh cell, the painted material's mean Young's modulus, density and damping (as
   /// SceneFrame's cell fields); materialVersion() changes whenever they do.
@@ -125,6 +130,7 @@ class ScenePhysics : private ToolContext {
   void materialsChanged() override;
 
   void updateState();          // nodes, gradients, strain energy from the simulator's state
+  void findStrainEnergy() const;  // elementEnergy_ and its density at the current rotations
   void updateMaterialFields();  // per-element mean E and density
 
   std::shared_ptr<const SceneGeometry> geometry_;
@@ -147,7 +153,10 @@ class ScenePhysics : private ToolContext {
 
   Points femNodes_, nodes_;
   std::vector<Eigen::Matrix3d> gradients_;
-  std::vector<double> elementVolume_, elementEnergy_, elementEnergyDensity_;
+  std::vector<double> elementVolume_;
+  bool strainEnergyWanted_ = false;
+  mutable bool strainEnergyStale_ = true;
+  mutable std::vector<double> elementEnergy_, elementEnergyDensity_;
   std::vector<double> elementYoungs_, elementDensity_, elementDamping_;
 };
 

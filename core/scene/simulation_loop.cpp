@@ -185,6 +185,17 @@ void SimulationLoop::playScript(SessionScript script) {
   wake_.notify_all();
 }
 
+void SimulationLoop::setStrainEnergyShown(bool shown) {
+  if (strainEnergyShown_.exchange(shown) == shown) return;
+  // A command, so that a paused scene publishes a frame with (or without) the field.
+  Command command;
+  command.other = [shown](ScenePhysics& physics) {
+    physics.setStrainEnergyWanted(shown);
+    return std::string();
+  };
+  queue(std::move(command));
+}
+
 void SimulationLoop::restoreEdits(MaterialSamples samples, std::vector<uint32_t> pins) {
   Command command;
   command.other = [this, samples = std::move(samples), pins = std::move(pins)](ScenePhysics& physics) {
@@ -328,6 +339,7 @@ bool SimulationLoop::runIteration() {
     if (stepRequests_ > 0) --stepRequests_;
   }
   retired.reset();  // a replaced scene is freed outside the lock
+  physics_->setStrainEnergyWanted(strainEnergyShown_.load());
   std::vector<std::string> problems;
   StepReport stepReport;
   try {

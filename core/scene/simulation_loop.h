@@ -91,6 +91,9 @@ class SimulationLoop {
   void reset();
   /// Simulated seconds per wall-clock second while playing (> 0; default 1).
   void setRealTimeRate(double rate);
+  /// Whether frames carry the strain energy density (ScenePhysics::setStrainEnergyWanted): the
+  /// window asks for it while the field is on show. Off at first.
+  void setStrainEnergyShown(bool shown);
   /// Settings that apply live (material, integrator, time step, gravity; scene_builder.h).
   void applyLive(const SceneSettings& settings);
   SceneSettings liveSettings() const;
@@ -143,6 +146,7 @@ class SimulationLoop {
   mutable std::mutex mutex_;
   std::condition_variable wake_;
   std::atomic<bool> stop_{false};
+  std::atomic<bool> strainEnergyShown_{false};
   // Under mutex_
   std::unique_ptr<ScenePhysics> ready_;
   uint64_t currentScene_ = 0;

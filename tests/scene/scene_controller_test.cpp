@@ -256,6 +256,7 @@ TEST(SceneController, FieldsAreUniformMaterialAndStrainEnergySplitsByElement) {
   const SceneSettings settings;
   SceneController controller(false);
   controller.loop().setPlaying(false);
+  controller.loop().setStrainEnergyShown(true);  // as the window asks while the field is shown
   controller.load(controlMesh("block3.json"), settings);
   controller.advance();
   const std::shared_ptr<const SceneGeometry> g = controller.takeNewGeometry();
@@ -305,12 +306,35 @@ TEST(SceneController, FieldsAreUniformMaterialAndStrainEnergySplitsByElement) {
   EXPECT_NEAR(sumTerms, total, 1e-12 * total);
   EXPECT_NEAR(sumDensities, total, 1e-9 * total);
   EXPECT_NEAR(volume, physics->model().mesh().restVolume(), 1e-12 * volume);
-  // The frame's cells carry their element's value.
+  // The frame's cells carry their element's value while it is wanted, zeros otherwise.
   SceneFrame own;
+  physics->fillFrame(own);
+  for (float w : own.cellStrainEnergy) ASSERT_EQ(w, 0.0f);
+  physics->setStrainEnergyWanted(true);
   physics->fillFrame(own);
   for (size_t c = 0; c < own.cellStrainEnergy.size(); ++c)
     ASSERT_EQ(own.cellStrainEnergy[c],
               static_cast<float>(physics->elementStrainEnergyDensity()[physics->geometry().cellElement[c]]));
+}
+
+TEST(SceneController, ShowingTheStrainEnergyChangesNoBitOfTheMotion) {
+  // Finding it takes the state's rotations, which are also the next step's warm start.
+  auto run = [](bool shown) {
+    const SceneSettings settings;
+    auto phase1 = buildSceneGeometry(controlMesh("block3.json"), settings, 7);
+    EXPECT_TRUE(phase1);
+    auto physics = ScenePhysics::build(phase1->geometry, phase1->solid, settings, nullptr, nullptr);
+    EXPECT_NE(physics, nullptr);
+    physics->setStrainEnergyWanted(shown);
+    for (int i = 0; i < 12; ++i) {
+      physics->step();
+      if (i == 5) physics->elementStrainEnergyDensity();  // asked once between steps
+    }
+    return Points(physics->simulator().positions() - physics->model().restControl());
+  };
+  const Points hidden = run(false), shown = run(true);
+  EXPECT_GT(hidden.cwiseAbs().maxCoeff(), 1e-6);  // it moved
+  EXPECT_TRUE(hidden == shown);
 }
 
 TEST(SceneController, LiveSettingsResetAndStepping) {
