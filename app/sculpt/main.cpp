@@ -15,6 +15,8 @@
 #include <exception>
 #include <filesystem>
 #include <iostream>
+#include <memory>
+#include <stdexcept>
 #include <utility>
 
 #include "project/preferences.h"
@@ -31,6 +33,14 @@ int main(int argc, char** argv) {
   } catch (const std::exception& error) {
     std::cerr << "error: " << error.what() << '\n' << sculpt::app::kUsage;
     return 2;
+  }
+  // The scene builds on the other core while the window is made. Settings it refuses are
+  // refused again, with the usual message, when the app loads the scene itself.
+  std::unique_ptr<sculpt::SceneController> scene;
+  try {
+    scene = sculpt::app::startSceneBuild(options);
+  } catch (const std::invalid_argument&) {
+    scene.reset();
   }
   if (!glfwInit()) {
     std::cerr << "error: cannot open a window (no display? run under xvfb-run)\n";
@@ -63,7 +73,8 @@ int main(int argc, char** argv) {
   glfwSwapInterval(1);
   int status = 0;
   try {
-    sculpt::app::SculptApp app(window, options, started, std::move(preferences), preferencesFile);
+    sculpt::app::SculptApp app(window, options, started, std::move(preferences), preferencesFile,
+                               std::move(scene));
     status = options.benchFrames > 0      ? app.runBenchmark()
              : options.recordSeconds > 0.0 ? app.runRecording()
              : options.headless            ? app.runHeadless()

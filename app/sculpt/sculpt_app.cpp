@@ -47,18 +47,37 @@ FieldKind nextField(FieldKind field) {
 
 }  // namespace
 
+void applyCommandLineSettings(const Options& options, SceneSettings& settings) {
+  if (options.level) settings.level = *options.level;
+  if (options.cage) settings.cageCellsAcross = *options.cage;
+  if (options.timeStep) settings.timeStep = *options.timeStep;
+}
+
+std::unique_ptr<SceneController> startSceneBuild(const Options& options) {
+  if (std::filesystem::path(options.scene).extension() == kProjectExtension) return nullptr;
+  auto controller = std::make_unique<SceneController>(!options.headless);
+  SceneSettings settings;
+  applyCommandLineSettings(options, settings);
+  controller->load(sceneSourceFor(options.scene), settings);
+  return controller;
+}
+
 SculptApp::SculptApp(GLFWwindow* window, const Options& options, Clock::time_point started,
-                     LoadedPreferences preferences, std::filesystem::path preferencesFile)
+                     LoadedPreferences preferences, std::filesystem::path preferencesFile,
+                     std::unique_ptr<SceneController> controller)
     : window_(window),
       options_(options),
       started_(started),
-      controller_(std::make_unique<SceneController>(!options.headless)),
       navigator_(options.stylusPreset ? NavigationPreset::Stylus : NavigationPreset::Blender),
       preferences_(std::move(preferences.preferences)),
       preferencesFile_(std::move(preferencesFile)),
       document_(preferencesFile_.parent_path(), kAutosaveIntervalS, [] {
         return std::chrono::duration<double>(Clock::now().time_since_epoch()).count();
       }) {
+  // startSceneBuild's controller builds options.scene already, with the settings below.
+  const bool buildingAlready = controller != nullptr;
+  controller_ = buildingAlready ? std::move(controller)
+                                : std::make_unique<SceneController>(!options.headless);
   if (!preferences.warning.empty()) model_.toast(preferences.warning, true, 8.0);
   if (!preferences_.keyMap.empty()) {  // the user's key map; bad lines are reported and skipped
     std::string problems;
@@ -105,7 +124,7 @@ SculptApp::SculptApp(GLFWwindow* window, const Options& options, Clock::time_poi
     openProject(options.scene, options.scene);  // FileError: main reports it, exit 2
   } else {
     documentSource_ = sceneSourceFor(options.scene);
-    controller_->load(documentSource_, model_.settings);
+    if (!buildingAlready) controller_->load(documentSource_, model_.settings);
   }
   if (!options.script.empty()) {
     scriptPath_ = options.script;
@@ -128,9 +147,7 @@ SculptApp::~SculptApp() {
 }
 
 void SculptApp::applyCommandLineSettings() {
-  if (options_.level) model_.settings.level = *options_.level;
-  if (options_.cage) model_.settings.cageCellsAcross = *options_.cage;
-  if (options_.timeStep) model_.settings.timeStep = *options_.timeStep;
+  sculpt::app::applyCommandLineSettings(options_, model_.settings);
 }
 
 void SculptApp::applyUiScale() { sculpt::app::applyUiScale(model_.uiScale); }
