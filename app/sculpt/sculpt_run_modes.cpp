@@ -117,7 +117,11 @@ int SculptApp::runWindow() {
       busyFrames = std::max(busyFrames, 2);
     lastDeviceTime = now;
     stylus_.setFocused(glfwGetWindowAttrib(window_, GLFW_FOCUSED) != 0);
-    if (busyFrames > 0) {
+    // While a scene builds behind the one shown, frames come only from events (input, the
+    // builder's progress, new states): llvmpipe draws on the CPU, and a busy loop's frames took
+    // the cores from the build (the default scene simulated 0.1 s later).
+    const bool building = view_.hasGeometry() && controller_->buildStatus().running;
+    if (busyFrames > 0 && !building) {
       glfwPollEvents();
     } else {
       const double timeout = 0.25;
