@@ -108,24 +108,25 @@ SparseMatrix assembleNodeMatrix(const FemMesh& mesh, MassField field) {
   SparseMatrix M(mesh.numNodes(), mesh.numNodes());
   {
     // Column j: the distinct nodes of the elements around j (a marker array dedupes them, so only
-    // the few hundred distinct rows of each column are sorted).
+    // the few hundred distinct rows of each column are sorted), written straight into the
+    // compressed arrays (inserting entry by entry took as long as the element matrices).
     std::vector<uint32_t> marker(mesh.numNodes(), UINT32_MAX);
-    std::vector<std::vector<uint32_t>> columns(mesh.numNodes());
-    Eigen::VectorXi sizes(mesh.numNodes());
+    std::vector<int> outerIndex(size_t(mesh.numNodes()) + 1, 0), innerIndex;
     for (uint32_t j = 0; j < mesh.numNodes(); ++j) {
+      const size_t first = innerIndex.size();
       for (uint32_t k = elementsBegin[j]; k < elementsBegin[j + 1]; ++k)
         for (uint32_t i : elementNodes(elementsOfNode[k]))
           if (marker[i] != j) {
             marker[i] = j;
-            columns[j].push_back(i);
+            innerIndex.push_back(static_cast<int>(i));
           }
-      std::sort(columns[j].begin(), columns[j].end());
-      sizes[j] = static_cast<int>(columns[j].size());
+      std::sort(innerIndex.begin() + std::ptrdiff_t(first), innerIndex.end());
+      outerIndex[j + 1] = static_cast<int>(innerIndex.size());
     }
-    M.reserve(sizes);
-    for (uint32_t j = 0; j < mesh.numNodes(); ++j)
-      for (uint32_t i : columns[j]) M.insert(static_cast<Eigen::Index>(i), j) = 0.0;
-    M.makeCompressed();
+    M.resizeNonZeros(static_cast<Eigen::Index>(innerIndex.size()));
+    std::copy(outerIndex.begin(), outerIndex.end(), M.outerIndexPtr());
+    std::copy(innerIndex.begin(), innerIndex.end(), M.innerIndexPtr());
+    std::fill(M.valuePtr(), M.valuePtr() + innerIndex.size(), 0.0);
   }
   const int* outer = M.outerIndexPtr();
   const int* inner = M.innerIndexPtr();
@@ -157,7 +158,9 @@ SparseMatrix assembleNodeMatrix(const FemMesh& mesh, MassField field) {
     for (size_t a = 0; a < ids.size(); ++a) order[a] = static_cast<uint32_t>(a);
     std::sort(order.begin(), order.end(), [&](uint32_t x, uint32_t y) { return ids[x] < ids[y]; });
     for (Eigen::Index b = 0; b < Me.cols(); ++b) {
-      const int* at = inner + outer[ids[b]];
+      // From the element's first row on: the column's earlier rows belong to other elements.
+      const int* at = std::lower_bound(inner + outer[ids[b]], inner + outer[ids[b] + 1],
+                                       static_cast<int>(ids[order.front()]));
       for (const uint32_t a : order) {
         while (*at < static_cast<int>(ids[a])) ++at;  // the pattern holds every element node
         values[at - inner] += Me(a, b);
