@@ -21,6 +21,7 @@
 
 #include "project/preferences.h"
 #include "sculpt/options.h"
+#include "sculpt/scene_start.h"
 #include "sculpt/sculpt_app.h"
 
 int main(int argc, char** argv) {

@@ -24,6 +24,7 @@
 #include "sculpt/draw_benchmark.h"
 #include "sculpt/help_overlay.h"
 #include "sculpt/real_time_factor.h"
+#include "sculpt/scene_start.h"
 #include "sculpt/ui_scale.h"
 #include "tools/script_topology.h"
 #include "tools/session_script.h"
@@ -46,21 +47,6 @@ FieldKind nextField(FieldKind field) {
 
 
 }  // namespace
-
-void applyCommandLineSettings(const Options& options, SceneSettings& settings) {
-  if (options.level) settings.level = *options.level;
-  if (options.cage) settings.cageCellsAcross = *options.cage;
-  if (options.timeStep) settings.timeStep = *options.timeStep;
-}
-
-std::unique_ptr<SceneController> startSceneBuild(const Options& options) {
-  if (std::filesystem::path(options.scene).extension() == kProjectExtension) return nullptr;
-  auto controller = std::make_unique<SceneController>(!options.headless);
-  SceneSettings settings;
-  applyCommandLineSettings(options, settings);
-  controller->load(sceneSourceFor(options.scene), settings);
-  return controller;
-}
 
 SculptApp::SculptApp(GLFWwindow* window, const Options& options, Clock::time_point started,
                      LoadedPreferences preferences, std::filesystem::path preferencesFile,
@@ -88,7 +74,7 @@ SculptApp::SculptApp(GLFWwindow* window, const Options& options, Clock::time_poi
   restoreBrushRadii(model_.tools, preferences_.brushRadii);  // a project opened later has its own
   model_.display = options.display;
   model_.preset = navigator_.preset();
-  applyCommandLineSettings();
+  applyCommandLineSettings(options_, model_.settings);
   model_.sceneFile = options.scene;
   model_.showPanels = !options.noUi;
   model_.showHelp = options.showHelp;
@@ -144,10 +130,6 @@ SculptApp::~SculptApp() {
     ImGui_ImplGlfw_Shutdown();
     ImGui::DestroyContext();
   }
-}
-
-void SculptApp::applyCommandLineSettings() {
-  sculpt::app::applyCommandLineSettings(options_, model_.settings);
 }
 
 void SculptApp::applyUiScale() { sculpt::app::applyUiScale(model_.uiScale); }

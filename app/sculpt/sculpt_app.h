@@ -35,21 +35,12 @@
 
 namespace sculpt::app {
 
-/// --level, --cage and --dt over `settings` (a scene's own, or the defaults).
-void applyCommandLineSettings(const Options& options, SceneSettings& settings);
-
-/// A scene controller already building the scene `options` names, with the default settings
-/// under the command line's: made before the window, so that the build runs on the other core
-/// while the window and its OpenGL context are made (about a tenth of a second on llvmpipe).
-/// Null for a project, which the app opens itself (it carries a document and its own settings).
-std::unique_ptr<SceneController> startSceneBuild(const Options& options);
-
 class SculptApp {
  public:
   /// `window` has a current OpenGL 3.3 core context; ImGui is set up here. `started`: when the
   /// process started (for the time to the first frame). `preferences` (key map, UI scale, recent
   /// scenes) come from `preferencesFile`, which the interactive window rewrites when it closes.
-  /// `controller`: one from startSceneBuild(options); null, the app makes its own and starts
+  /// `controller`: one from startSceneBuild(options) (scene_start.h); null, the app makes its own and starts
   /// the build itself.
   SculptApp(GLFWwindow* window, const Options& options,
             std::chrono::steady_clock::time_point started, LoadedPreferences preferences,
@@ -150,7 +141,6 @@ class SculptApp {
   std::string nextScreenshotPath() const;
   void loadScene(const std::string& path);
   void applyUiScale();
-  void applyCommandLineSettings();  // --level and --dt over the scene's own settings
   void reportFirstFrame();
   void savePreferencesOnClose();
   float viewAspect() const;

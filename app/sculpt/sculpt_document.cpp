@@ -13,6 +13,7 @@
 #include "project/project_file.h"
 #include "scene/scene_file.h"
 #include "sculpt/display_state.h"
+#include "sculpt/scene_start.h"
 #include "sculpt/sculpt_app.h"
 #include "sculpt/termination_signals.h"
 
@@ -79,7 +80,8 @@ void SculptApp::openProject(const std::filesystem::path& path, const std::filesy
   if (from == options_.scene)  // display switches given with the project win (--field, --clip)
     model_.display = withCommandLineDisplay(model_.display, options_.display);
   model_.settings = scene.settings;
-  if (from == options_.scene) applyCommandLineSettings();  // the project named on the command line
+  // The project named on the command line: --level, --cage and --dt over its own settings.
+  if (from == options_.scene) applyCommandLineSettings(options_, model_.settings);
   const CameraState camera = project.camera;
   const bool recovered = from != path;
   document_.start(std::move(project), path, recovered);  // recovered work is unsaved work

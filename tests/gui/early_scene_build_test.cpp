@@ -4,6 +4,7 @@
 #include <chrono>
 #include <thread>
 
+#include "sculpt/scene_start.h"
 #include "sculpt_session.h"
 
 namespace sculpt::app {
