@@ -40,8 +40,8 @@ class SculptApp {
   /// `window` has a current OpenGL 3.3 core context; ImGui is set up here. `started`: when the
   /// process started (for the time to the first frame). `preferences` (key map, UI scale, recent
   /// scenes) come from `preferencesFile`, which the interactive window rewrites when it closes.
-  /// `controller`: one from startSceneBuild(options) (scene_start.h); null, the app makes its own and starts
-  /// the build itself.
+  /// `controller`: one from startSceneBuild(options) (scene_start.h); null, the app makes its
+  /// own and starts the build itself.
   SculptApp(GLFWwindow* window, const Options& options,
             std::chrono::steady_clock::time_point started, LoadedPreferences preferences,
             std::filesystem::path preferencesFile,

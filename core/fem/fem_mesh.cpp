@@ -215,7 +215,8 @@ std::optional<FemMesh> buildFemMesh(const CellComplex& cells, const Topology& to
     for (int a = 0; a < 4; ++a)
       for (int b = 0; b < 4; ++b) {
         Eigen::Vector3d X[4];
-        for (int g = 0; g < 4; ++g) X[g] = mesh.restNodes.row(nodes[a * 16 + b * 4 + g]).transpose();
+        for (int g = 0; g < 4; ++g)
+          X[g] = mesh.restNodes.row(nodes[a * 16 + b * 4 + g]).transpose();
         for (int k = 0; k < 4; ++k) {
           w0[a][b][k] = B[k][0] * X[0] + B[k][1] * X[1] + B[k][2] * X[2] + B[k][3] * X[3];
           w1[a][b][k] = D[k][0] * X[0] + D[k][1] * X[1] + D[k][2] * X[2] + D[k][3] * X[3];

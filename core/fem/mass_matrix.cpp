@@ -158,9 +158,7 @@ SparseMatrix assembleNodeMatrix(const FemMesh& mesh, MassField field) {
     for (size_t a = 0; a < ids.size(); ++a) order[a] = static_cast<uint32_t>(a);
     std::sort(order.begin(), order.end(), [&](uint32_t x, uint32_t y) { return ids[x] < ids[y]; });
     for (Eigen::Index b = 0; b < Me.cols(); ++b) {
-      // From the element's first row on: the column's earlier rows belong to other elements.
-      const int* at = std::lower_bound(inner + outer[ids[b]], inner + outer[ids[b] + 1],
-                                       static_cast<int>(ids[order.front()]));
+      const int* at = inner + outer[ids[b]];
       for (const uint32_t a : order) {
         while (*at < static_cast<int>(ids[a])) ++at;  // the pattern holds every element node
         values[at - inner] += Me(a, b);

@@ -187,12 +187,10 @@ void SimulationLoop::playScript(SessionScript script) {
 
 void SimulationLoop::setStrainEnergyShown(bool shown) {
   if (strainEnergyShown_.exchange(shown) == shown) return;
-  // A command, so that a paused scene publishes a frame with (or without) the field.
+  // runIteration passes the flag on; an empty command wakes a paused loop to publish a frame
+  // with (or without) the field.
   Command command;
-  command.other = [shown](ScenePhysics& physics) {
-    physics.setStrainEnergyWanted(shown);
-    return std::string();
-  };
+  command.other = [](ScenePhysics&) { return std::string(); };
   queue(std::move(command));
 }
 
@@ -339,7 +337,7 @@ bool SimulationLoop::runIteration() {
     if (stepRequests_ > 0) --stepRequests_;
   }
   retired.reset();  // a replaced scene is freed outside the lock
-  physics_->setStrainEnergyWanted(strainEnergyShown_.load());
+  physics_->setStrainEnergyWanted(strainEnergyShown_.load());  // a new scene's too
   std::vector<std::string> problems;
   StepReport stepReport;
   try {
