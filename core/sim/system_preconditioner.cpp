@@ -220,9 +220,7 @@ bool SystemPreconditioner::update(const FemModel& model, double massScale, doubl
   // if it is late), not when it happens to be ready: the results must not depend on timing.
   if (pending_.valid() && ++solvesSinceStart_ >= kDeterministicDelay) adoptBackground();
   if (!factor_ || !std::equal(scales, scales + 3, factor_->scales)) {
-    if (pending_.valid()) pending_.wait();
-    pending_ = {};
-    adopt(makeFactor(model, massScale, dampingScale, stiffnessScale, freeDofs));
+    factorNow(model, massScale, dampingScale, stiffnessScale, freeDofs);
   } else if (!pending_.valid() &&
              (freeDofs != factor_->freeDofs ||
               (drifted_ && model.materialVersion() != factor_->materialVersion))) {
@@ -236,11 +234,16 @@ bool SystemPreconditioner::update(const FemModel& model, double massScale, doubl
 
 void SystemPreconditioner::refactor(const FemModel& model) {
   if (!factor_) return;
-  if (pending_.valid()) pending_.wait();
-  pending_ = {};
   const double* s = factor_->scales;
-  adopt(makeFactor(model, s[0], s[1], s[2], freeDofs_));
+  factorNow(model, s[0], s[1], s[2], freeDofs_);
   rescale(model, freeDofs_);
+}
+
+void SystemPreconditioner::factorNow(const FemModel& model, double a, double b, double c,
+                                     const std::vector<int>& freeDofs) {
+  if (pending_.valid()) pending_.wait();  // a factor on the worker is dropped
+  pending_ = {};
+  adopt(makeFactor(model, a, b, c, freeDofs));
 }
 
 void SystemPreconditioner::rescale(const FemModel& model, const std::vector<int>& freeDofs) {

@@ -66,6 +66,9 @@ class SystemPreconditioner {
   std::unique_ptr<Factor> makeFactor(const FemModel& model, double a, double b, double c,
                                      const std::vector<int>& freeDofs);
   void adopt(std::unique_ptr<Factor> factor);
+  // A factor made and adopted on the spot.
+  void factorNow(const FemModel& model, double a, double b, double c,
+                 const std::vector<int>& freeDofs);
   void rescale(const FemModel& model, const std::vector<int>& freeDofs);
   void startBackground(const FemModel& model, double a, double b, double c,
                        const std::vector<int>& freeDofs);
