@@ -21,19 +21,20 @@
 #include "subdiv/regularity.h"
 
 namespace sculpt {
+
+// What the drawn surface is made from.
+struct SceneSurfaceInput {
+  SceneKind kind = SceneKind::DefaultBunny;
+  SurfaceMesh source;    // the surface as read (the bunny, an imported surface)
+  int renderLevel = 0;   // a control mesh: Catmull–Clark levels of its boundary
+};
+
 namespace {
 
 std::string fileName(const std::string& path) {
   return std::filesystem::path(path).filename().string();
 }
 
-// The display surface and the control mesh of a source.
-struct SourceShape {
-  SurfaceMesh display;  // what is drawn (positions and faces)
-  CellComplex control;
-  double cellSize = 0.0;
-  std::string description;
-};
 
 SurfaceMesh readSurface(const std::string& path) {
   if (!std::filesystem::exists(path))
@@ -152,11 +153,12 @@ std::string bunnyPath(const SceneSource& source) {
   return (std::filesystem::path(SCULPT_SOURCE_DIR) / "assets" / "bunny.obj").string();
 }
 
-std::optional<SceneBuildPhase1> buildPhase1(const SceneSource& source,
-                                            const SceneSettings& settings, uint64_t sceneId,
-                                            ProgressReporter* progress) {
+std::optional<SceneSolidPart> buildSolidPart(const SceneSource& source,
+                                             const SceneSettings& settings, uint64_t sceneId,
+                                             ProgressReporter* progress) {
   auto geometry = std::make_shared<SceneGeometry>();
   auto solid = std::make_shared<SceneSolid>();
+  auto surface = std::make_shared<SceneSurfaceInput>();
   geometry->sceneId = sceneId;
   StageClock clock(geometry->stageMs);
   // Fractions of the whole build (both phases) as measured on the default scene: phase 1 is
@@ -164,79 +166,61 @@ std::optional<SceneBuildPhase1> buildPhase1(const SceneSource& source,
   BuildStage read(progress, 0.0, 0.01, "reading");
   if (!read.start()) return std::nullopt;
 
-  // Surface and control mesh
-  SourceShape shape;
+  // The control mesh (and the surface the drawn one is made from)
   const std::string sourceName = source.path.empty() ? "the project" : fileName(source.path);
+  surface->kind = source.kind;
+  surface->renderLevel = settings.renderLevel;
+  CellComplex control;
+  double cellSize = 0.0;
+  std::string description;
   if (source.kind == SceneKind::ControlMesh) {
-    CellComplex control;
     try {
       control = source.project ? source.project->controlMesh : loadControlMeshJson(source.path);
     } catch (const std::exception& e) {
       throw std::runtime_error(std::string("cannot load the control mesh ") + e.what());
     }
     throwIfInvalid(control, sourceName);
+    cellSize = meanEdgeLength(control, buildTopology(control));
+    description = sourceName + ", surface at Catmull-Clark level " +
+                  std::to_string(settings.renderLevel);
     clock.lap("read");
-    BuildStage refine(progress, 0.01, 0.04, "refining the surface");
-    if (!refine.start()) return std::nullopt;
-    const Topology topology = buildTopology(control);
-    shape.display = controlMeshSurface(control, topology, settings.renderLevel);
-    shape.cellSize = meanEdgeLength(control, topology);
-    shape.control = std::move(control);
-    shape.description = sourceName + ", surface at Catmull-Clark level " +
-                        std::to_string(settings.renderLevel);
-    clock.lap("refine");
   } else {
-    const bool bunny = source.kind == SceneKind::DefaultBunny;
     const std::string path = bunnyPath(source);
-    const SurfaceMesh surface = readSurface(path);
+    surface->source = readSurface(path);
     clock.lap("read");
-    BuildStage refine(progress, 0.01, 0.04, "refining the surface");
-    if (!refine.start()) return std::nullopt;
-    // The bunny is drawn Loop-refined three times onto its limit surface (235k triangles, the
-    // issue's "about 200k"); the cage is built around
-    // the coarse surface (the margin covers the difference).
-    shape.display = bunny ? loopRefine(surface, 3, true) : surface;
-    clock.lap("refine");
     if (source.project) {  // the user's (possibly edited) cage
-      shape.control = source.project->controlMesh;
-      throwIfInvalid(shape.control, sourceName);
-      shape.cellSize = meanEdgeLength(shape.control, buildTopology(shape.control));
-      shape.description = fileName(path) + " in a cage of " +
-                          std::to_string(shape.control.numCells()) + " cells";
+      control = source.project->controlMesh;
+      throwIfInvalid(control, sourceName);
+      cellSize = meanEdgeLength(control, buildTopology(control));
+      description = fileName(path) + " in a cage of " + std::to_string(control.numCells()) +
+                    " cells";
     } else {
-      BuildStage cage(progress, 0.04, 0.05, "building the cage");
+      BuildStage cage(progress, 0.01, 0.02, "building the cage");
       if (!cage.start()) return std::nullopt;
-      Cage built = cageAround(surface, settings, path);
-      shape.cellSize = built.cellSize;
-      shape.control = std::move(built.control);
-      shape.description = fileName(path) + " in a " + std::to_string(built.gridSize[0]) + "x" +
-                          std::to_string(built.gridSize[1]) + "x" +
-                          std::to_string(built.gridSize[2]) + " cage of " +
-                          std::to_string(shape.control.numCells()) + " cells";
+      // Around the surface as read: the margin covers the refined surface's difference.
+      Cage built = cageAround(surface->source, settings, path);
+      cellSize = built.cellSize;
+      control = std::move(built.control);
+      description = fileName(path) + " in a " + std::to_string(built.gridSize[0]) + "x" +
+                    std::to_string(built.gridSize[1]) + "x" + std::to_string(built.gridSize[2]) +
+                    " cage of " + std::to_string(control.numCells()) + " cells";
     }
     clock.lap("cage");
   }
-  geometry->restPositions = shape.display.positions;
-  geometry->restNormals = vertexNormals(shape.display);
-  geometry->triangles = triangulate(shape.display);
-  if (geometry->triangles.empty()) throw std::runtime_error("the surface has no faces to draw");
-  geometry->surface = std::make_shared<const SurfaceMesh>(std::move(shape.display));
-  clock.lap("normals");
 
   // The solid at level K and its cells
-  BuildStage refineSolid(progress, 0.05, 0.06, "subdividing the solid");
+  BuildStage refineSolid(progress, 0.02, 0.03, "subdividing the solid");
   if (!refineSolid.start()) return std::nullopt;
   // Phase 2 builds the elements and the solver on these cells: refuse before either phase
   // allocates when the whole would not fit.
   if (const std::string refusal =
-          refinementRefusal(buildTopology(shape.control), settings.level, sourceName, kSimulation);
+          refinementRefusal(buildTopology(control), settings.level, sourceName, kSimulation);
       !refusal.empty())
     throw std::runtime_error(refusal);
-  std::optional<Subdivision> subdivision =
-      subdivide(shape.control, settings.level, refineSolid.reporter());
+  std::optional<Subdivision> subdivision = subdivide(control, settings.level, refineSolid.reporter());
   if (!subdivision) return std::nullopt;
   clock.lap("subdivide");
-  BuildStage cells(progress, 0.06, 0.07, "cells");
+  BuildStage cells(progress, 0.03, 0.04, "cells");
   if (!cells.start()) return std::nullopt;
   solid->centres = solidCellMesh(subdivision->finest(), subdivision->finestTopology());
   geometry->cellMesh = std::move(solid->centres.mesh);
@@ -260,13 +244,8 @@ std::optional<SceneBuildPhase1> buildPhase1(const SceneSource& source,
     throw std::logic_error("the element plan does not match the level-K cells");
   clock.lap("cells");
 
-  // Embedding and the node-gradient stencil
-  BuildStage embed(progress, 0.07, 0.08, "embedding the surface");
-  if (!embed.start()) return std::nullopt;
-  geometry->embedding = embedPoints(geometry->cellMesh, geometry->restPositions, embed.reporter());
-  if (embed.cancelled()) return std::nullopt;
-  clock.lap("embed");
-  BuildStage stencil(progress, 0.08, 0.09, "gradient stencil");
+  // The node-gradient stencils (each step's state needs them)
+  BuildStage stencil(progress, 0.04, 0.05, "gradient stencil");
   if (!stencil.start()) return std::nullopt;
   // The fit keeps the average's rows where it cannot fit: made from it, not anew.
   const NodeGradientStencil& average =
@@ -278,41 +257,91 @@ std::optional<SceneBuildPhase1> buildPhase1(const SceneSource& source,
 
   // The control mesh for display, with the top layer pinned
   const Topology& controlTopology = subdivision->topologies.front();
-  geometry->restControl = shape.control.positions;
+  geometry->restControl = control.positions;
   geometry->controlEdges = controlTopology.edgeVertices;
-  geometry->pinned.assign(shape.control.numVertices(), 0);
+  geometry->pinned.assign(control.numVertices(), 0);
   if (source.project) {
     for (const uint32_t v : source.project->pins)
       if (v < geometry->pinned.size()) geometry->pinned[v] = 1;
   } else {
-    const double top = shape.control.positions.col(1).maxCoeff();
-    for (uint32_t v = 0; v < shape.control.numVertices(); ++v)
-      geometry->pinned[v] = shape.control.positions(v, 1) >= top - 0.5 * shape.cellSize;
+    const double top = control.positions.col(1).maxCoeff();
+    for (uint32_t v = 0; v < control.numVertices(); ++v)
+      geometry->pinned[v] = control.positions(v, 1) >= top - 0.5 * cellSize;
   }
   solid->project = source.project;
-  geometry->controlMesh = std::make_shared<const CellComplex>(shape.control);
-  solid->control = std::move(shape.control);
-  solid->cellSize = shape.cellSize;
-  geometry->description = shape.description + ", level " + std::to_string(settings.level);
-  return SceneBuildPhase1{std::move(geometry), std::move(solid)};
+  geometry->controlMesh = std::make_shared<const CellComplex>(control);
+  solid->control = std::move(control);
+  solid->cellSize = cellSize;
+  geometry->description = description + ", level " + std::to_string(settings.level);
+  return SceneSolidPart{std::move(geometry), std::move(solid), std::move(surface)};
 }
 
-}  // namespace
+bool buildSurfacePart(const SceneSolidPart& part, ProgressReporter* progress) {
+  SceneGeometry& geometry = *part.geometry;
+  const SceneSurfaceInput& input = *part.surface;
+  StageClock clock(geometry.stageMs);
+  BuildStage refine(progress, 0.05, 0.08, "refining the surface");
+  if (!refine.start()) return false;
+  SurfaceMesh display;
+  if (input.kind == SceneKind::ControlMesh) {
+    const CellComplex& control = part.solid->control;
+    display = controlMeshSurface(control, buildTopology(control), input.renderLevel);
+  } else {
+    // The bunny is drawn Loop-refined three times onto its limit surface (235k triangles, the
+    // issue's "about 200k").
+    display = input.kind == SceneKind::DefaultBunny ? loopRefine(input.source, 3, true)
+                                                    : input.source;
+  }
+  clock.lap("refine");
+  geometry.restPositions = display.positions;
+  geometry.restNormals = vertexNormals(display);
+  geometry.triangles = triangulate(display);
+  if (geometry.triangles.empty()) throw std::runtime_error("the surface has no faces to draw");
+  geometry.surface = std::make_shared<const SurfaceMesh>(std::move(display));
+  clock.lap("normals");
 
-std::optional<SceneBuildPhase1> buildSceneGeometry(const SceneSource& source,
-                                                   const SceneSettings& settings, uint64_t sceneId,
-                                                   ProgressReporter* progress) {
-  if (const std::string problem = sceneSettingsProblem(settings); !problem.empty())
-    throw std::invalid_argument(problem);
+  BuildStage embed(progress, 0.08, 0.09, "embedding the surface");
+  if (!embed.start()) return false;
+  geometry.embedding = embedPoints(geometry.cellMesh, geometry.restPositions, embed.reporter());
+  if (embed.cancelled()) return false;
+  clock.lap("embed");
+  return true;
+}
+
+// Runs `build`, naming the source's file in every failure.
+template <class Build>
+auto namingTheFile(const SceneSource& source, const Build& build) {
   try {
-    return buildPhase1(source, settings, sceneId, progress);
+    return build();
   } catch (const std::exception& e) {
-    // Every failure names the file it concerns.
     const std::string path = bunnyPath(source);
     const std::string name = path.empty() ? std::string("the project") : fileName(path);
     if (std::string(e.what()).find(name) != std::string::npos) throw;
     throw std::runtime_error(name + ": " + e.what());
   }
+}
+
+}  // namespace
+
+std::optional<SceneSolidPart> buildSceneSolid(const SceneSource& source,
+                                              const SceneSettings& settings, uint64_t sceneId,
+                                              ProgressReporter* progress) {
+  if (const std::string problem = sceneSettingsProblem(settings); !problem.empty())
+    throw std::invalid_argument(problem);
+  return namingTheFile(source, [&] { return buildSolidPart(source, settings, sceneId, progress); });
+}
+
+bool buildSceneSurface(const SceneSource& source, const SceneSolidPart& part,
+                       ProgressReporter* progress) {
+  return namingTheFile(source, [&] { return buildSurfacePart(part, progress); });
+}
+
+std::optional<SceneBuildPhase1> buildSceneGeometry(const SceneSource& source,
+                                                   const SceneSettings& settings, uint64_t sceneId,
+                                                   ProgressReporter* progress) {
+  std::optional<SceneSolidPart> part = buildSceneSolid(source, settings, sceneId, progress);
+  if (!part || !buildSceneSurface(source, *part, progress)) return std::nullopt;
+  return SceneBuildPhase1{std::move(part->geometry), std::move(part->solid)};
 }
 
 }  // namespace sculpt

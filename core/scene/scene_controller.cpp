@@ -4,6 +4,8 @@
 #include <stdexcept>
 #include <utility>
 
+#include "util/parallel_for.h"
+
 namespace sculpt {
 
 SceneController::SceneController(bool threaded) : threaded_(threaded), loop_(threaded) {
@@ -23,6 +25,7 @@ SceneController::~SceneController() {
   }
   builderWake_.notify_all();
   if (builder_.joinable()) builder_.join();
+  deferred_.reset();  // a phase 2 still building sees the cancel and stops
   loop_.setProblemHandler(nullptr);
 }
 
@@ -200,14 +203,40 @@ void SceneController::abandon(const Job& job) {
   status_.error.clear();
 }
 
+std::future<SceneController::PhysicsBuild> SceneController::startPhysics(
+    const Job& job, const SceneSolidPart& part) {
+  // The job is copied: its progress reporter refers to it for as long as the build runs.
+  return std::async(std::launch::async, [this, job, geometry = part.geometry, solid = part.solid] {
+    ProgressReporter progress = progressFor(job);
+    PhysicsBuild build;
+    build.physics = ScenePhysics::build(geometry, solid, job.settings, &progress, &build.stageMs);
+    return build;
+  });
+}
+
 std::optional<SceneController::Phase2> SceneController::runPhase1(const Job& job) {
+  std::future<PhysicsBuild> physics;
   try {
     ProgressReporter progress = progressFor(job);
-    std::optional<SceneBuildPhase1> phase1 =
-        buildSceneGeometry(job.source, job.settings, job.id, &progress);
-    if (!phase1 || cancelled(job)) {
+    std::optional<SceneSolidPart> part =
+        buildSceneSolid(job.source, job.settings, job.id, &progress);
+    if (!part || cancelled(job)) {
       abandon(job);
       return std::nullopt;
+    }
+    physics = startPhysics(job, *part);
+    // The surface's stages only check for cancelling: the build's progress is phase 2's. Its
+    // loops run on this thread alone, so that phase 2's never wait for the shared workers.
+    ProgressReporter surfaceProgress(
+        [this, &job](double, std::string_view) { return !cancelled(job); });
+    bool surfaceBuilt = false;
+    {
+      const InlineLoopsOnThisThread inlineLoops;
+      surfaceBuilt = buildSceneSurface(job.source, *part, &surfaceProgress);
+    }
+    if (!surfaceBuilt || cancelled(job)) {
+      abandon(job);
+      return std::nullopt;  // phase 2 sees the cancel and stops; its future waits for it
     }
     std::unique_lock lock(mutex_);
     if (cancelled(job)) {
@@ -215,7 +244,8 @@ std::optional<SceneController::Phase2> SceneController::runPhase1(const Job& job
       abandon(job);
       return std::nullopt;
     }
-    Phase2 next{job, std::move(*phase1), !loop_.hasSimulation()};
+    Phase2 next{job, SceneBuildPhase1{part->geometry, part->solid}, !loop_.hasSimulation(),
+                std::move(physics)};
     if (next.early) {  // nothing runs: show the rest shape now
       newGeometry_ = next.phase1.geometry;
       currentScene_ = job.id;
@@ -225,21 +255,21 @@ std::optional<SceneController::Phase2> SceneController::runPhase1(const Job& job
     }
     return next;
   } catch (const std::exception& e) {
+    job.cancel->store(true);  // a phase 2 under way stops
     const std::lock_guard lock(mutex_);
     finishJob(job, e.what(), nullptr);
     return std::nullopt;
   }
 }
 
-void SceneController::runPhase2(const Phase2& work) {
+void SceneController::runPhase2(Phase2& work) {
   const Job& job = work.job;
-  if (cancelled(job)) return abandon(job);
   try {
-    ProgressReporter progress = progressFor(job);
+    PhysicsBuild built = work.physics.get();
+    if (!built.physics || cancelled(job)) return abandon(job);
     StageTimes times = work.phase1.geometry->stageMs;
-    std::unique_ptr<ScenePhysics> physics = ScenePhysics::build(
-        work.phase1.geometry, work.phase1.solid, job.settings, &progress, &times);
-    if (!physics || cancelled(job)) return abandon(job);
+    times.insert(times.end(), built.stageMs.begin(), built.stageMs.end());
+    std::unique_ptr<ScenePhysics> physics = std::move(built.physics);
     SceneFrame frame;
     physics->fillFrame(frame);
     {

@@ -9,9 +9,10 @@
 //    ("physics") the simulation. When no simulation is running (the first scene, or after a
 //    failed one) the geometry is handed over after phase 1 with its rest frame, so the first
 //    frame comes early. Otherwise the current scene keeps running and drawing until both phases
-//    are done, and the new geometry and simulation replace it together. A second load() or
-//    cancelBuild() cancels the build in flight; a cancelled or failed build leaves the current
-//    scene untouched.
+//    are done, and the new geometry and simulation replace it together. Phase 2 starts on a
+//    thread of its own once phase 1 has the solid, and phase 1 makes the drawn surface
+//    meanwhile. A second load() or cancelBuild() cancels the build in flight; a cancelled or
+//    failed build leaves the current scene untouched.
 //  - Simulation: the loop's thread owns the running ScenePhysics and takes a newly built one at
 //    a step boundary. Frames of a replaced scene are never published after its successor's
 //    geometry.
@@ -22,6 +23,7 @@
 #include <condition_variable>
 #include <cstdint>
 #include <functional>
+#include <future>
 #include <memory>
 #include <mutex>
 #include <optional>
@@ -103,17 +105,25 @@ class SceneController {
     SceneSettings settings;
     std::shared_ptr<std::atomic<bool>> cancel;
   };
+  struct PhysicsBuild {
+    std::unique_ptr<ScenePhysics> physics;  // null: cancelled
+    StageTimes stageMs;
+  };
   struct Phase2 {  // a build between its phases
     Job job;
     SceneBuildPhase1 phase1;
     bool early = false;  // its geometry was handed over after phase 1
+    // Phase 2, started on its own thread as soon as the solid was built: it runs while the
+    // drawn surface is made (and, headless, while the rest shape is drawn).
+    std::future<PhysicsBuild> physics;
   };
   const Job* jobInFlightLocked() const;
   ProgressReporter progressFor(const Job& job);
   bool cancelled(const Job& job) const;
   void abandon(const Job& job);
   std::optional<Phase2> runPhase1(const Job& job);  // nullopt: failed or cancelled
-  void runPhase2(const Phase2& work);
+  std::future<PhysicsBuild> startPhysics(const Job& job, const SceneSolidPart& part);
+  void runPhase2(Phase2& work);
   void finishJob(const Job& job, const std::string& error, const StageTimes* times);
   void builderLoop();
 

@@ -572,6 +572,47 @@ TEST(SceneController, ControlMeshScenes) {
   }
 }
 
+TEST(SceneController, PhaseTwoNeedsOnlyTheSolidPartOfPhaseOne) {
+  // The window starts phase 2 on the solid part while the surface part is still being made: the
+  // physics must build and step the same without the surface, and the two parts must give the
+  // geometry that phase 1 in one piece gives.
+  SceneSettings settings;
+  settings.cageCellsAcross = 4.0;
+  for (const SceneSource& source : {controlMesh("house.json"), SceneSource{}}) {
+    SCOPED_TRACE(source.path.empty() ? "the bunny" : source.path);
+    std::optional<SceneSolidPart> part = buildSceneSolid(source, settings, 1);
+    ASSERT_TRUE(part);
+    EXPECT_EQ(part->geometry->restPositions.rows(), 0);
+    EXPECT_TRUE(part->geometry->triangles.empty());
+    EXPECT_EQ(part->geometry->embedding.cells.size(), 0u);
+    auto early = ScenePhysics::build(part->geometry, part->solid, settings, nullptr, nullptr);
+    ASSERT_NE(early, nullptr);
+    ASSERT_TRUE(buildSceneSurface(source, *part));
+
+    const auto whole = buildSceneGeometry(source, settings, 1);
+    ASSERT_TRUE(whole);
+    const SceneGeometry& a = *part->geometry;
+    const SceneGeometry& b = *whole->geometry;
+    EXPECT_EQ(a.restPositions, b.restPositions);
+    EXPECT_EQ(a.restNormals, b.restNormals);
+    EXPECT_EQ(a.triangles, b.triangles);
+    EXPECT_EQ(a.embedding.cells, b.embedding.cells);
+    EXPECT_EQ(a.embedding.local, b.embedding.local);
+    EXPECT_EQ(a.cellMesh.positions, b.cellMesh.positions);
+    EXPECT_EQ(a.cellElement, b.cellElement);
+    EXPECT_EQ(a.pinned, b.pinned);
+    EXPECT_EQ(a.description, b.description);
+    auto physics = ScenePhysics::build(whole->geometry, whole->solid, settings, nullptr, nullptr);
+    ASSERT_NE(physics, nullptr);
+    for (int step = 0; step < 5; ++step) {
+      early->step();
+      physics->step();
+    }
+    EXPECT_GT((physics->simulator().positions() - b.restControl).cwiseAbs().maxCoeff(), 0.0);
+    EXPECT_EQ(early->simulator().positions(), physics->simulator().positions());
+  }
+}
+
 TEST(SceneController, ImportedSurfacesAreCagedAndDrawnAsIs) {
   // A cube of quadrilaterals, fanned into 12 triangles, in a cage of about 4 cells across.
   const fs::path dir = fs::temp_directory_path() / "sculpt_scene_controller_import";
