@@ -1,5 +1,7 @@
 #include "sim/sparse_cholesky.h"
 
+#include "sim/single_precision_factor.h"
+
 #include <Eigen/CholmodSupport>
 #include <Eigen/SparseCholesky>
 #include <dlfcn.h>
@@ -16,8 +18,19 @@ using SparseMatrix = Eigen::SparseMatrix<double>;
 // From this many rows on, the ordering is METIS's alone (see factor()).
 constexpr Eigen::Index kNestedDissectionRows = 3000;
 
+namespace {
+
+// Eigen's wrapper keeps CHOLMOD's factor to itself; the single-precision copy reads it.
+class SupernodalLLT : public Eigen::CholmodSupernodalLLT<SparseMatrix, Eigen::Lower> {
+ public:
+  const cholmod_factor* factor() const { return m_cholmodFactor; }
+};
+
+}  // namespace
+
 struct SparseCholesky::Impl {
-  Eigen::CholmodSupernodalLLT<SparseMatrix, Eigen::Lower> supernodal;
+  SupernodalLLT supernodal;
+  SinglePrecisionFactor single;
   Eigen::SimplicialLLT<SparseMatrix, Eigen::Lower> simplicial;
   // The pattern the analysis belongs to (empty: none yet).
   std::vector<int> outer, inner;
@@ -106,6 +119,8 @@ bool SparseCholesky::factor(const SparseMatrix& S) {
     auto& llt = impl_->supernodal;
     llt.factorize(S);
     valid_ = llt.info() == Eigen::Success;
+    impl_->single = {};
+    if (valid_) impl_->single.copy(*llt.factor());
   } else {
     auto& llt = impl_->simplicial;
     llt.factorize(S);
@@ -115,8 +130,12 @@ bool SparseCholesky::factor(const SparseMatrix& S) {
 }
 
 void SparseCholesky::solve(const Eigen::VectorXd& r, Eigen::VectorXd& z) const {
-  if (method_ == Method::Supernodal) z = impl_->supernodal.solve(r);
-  else z = impl_->simplicial.solve(r);
+  if (method_ == Method::Simplicial) {
+    z = impl_->simplicial.solve(r);
+    return;
+  }
+  // In single precision, unless a value leaves its range.
+  if (impl_->single.empty() || !impl_->single.solve(r, z)) z = impl_->supernodal.solve(r);
 }
 
 long long SparseCholesky::factorNonZeros() const {

@@ -4,6 +4,7 @@
 
 #include <gtest/gtest.h>
 
+#include <cstdio>
 #include <limits>
 #include <random>
 
@@ -55,7 +56,11 @@ TEST(SystemPreconditioner, SupernodalAndSimplicialFactorsSolveAlike) {
   Eigen::VectorXd a, b;
   supernodal.apply(r, a);
   simplicial.apply(r, b);
-  EXPECT_LT((a - b).norm(), 1e-10 * b.norm());
+  // The supernodal factor solves in single precision (float's epsilon is 6e-8).
+  const double difference = (a - b).norm() / b.norm();
+  std::printf("[ measured ] |supernodal - simplicial| / |simplicial| = %.2e\n", difference);
+  EXPECT_LT(difference, 2e-6);
+  EXPECT_GT(difference, 0.0);  // it is the single-precision solve that ran
   EXPECT_GT(supernodal.stats().factorNonZeros, 0);
 }
 
@@ -63,7 +68,8 @@ TEST(SystemPreconditioner, UniformPaintIsAbsorbedExactlyByRescaling) {
   auto model = test::buildModel(test::block3(), 1, false);
   ASSERT_TRUE(model);
   const std::vector<int> dofs = allDofs(*model, 16);
-  SystemPreconditioner stale;
+  // Double-precision solves, so that "to rounding" means 1e-9.
+  SystemPreconditioner stale(SparseCholesky::Method::Simplicial);
   ASSERT_TRUE(stale.update(*model, 0, 0, 1, dofs));  // the static solve's S = K~lin
   const double inf = std::numeric_limits<double>::infinity();
   ASSERT_GT(model->paintMaterial(Eigen::Vector3d::Zero(), inf, scaledMaterial(10.0)), 0);
@@ -71,7 +77,7 @@ TEST(SystemPreconditioner, UniformPaintIsAbsorbedExactlyByRescaling) {
   EXPECT_EQ(stale.stats().factorizations, 1);  // no refactorisation on a material edit
   EXPECT_EQ(stale.stats().rescalings, 1);
 
-  SystemPreconditioner fresh;
+  SystemPreconditioner fresh(SparseCholesky::Method::Simplicial);
   ASSERT_TRUE(fresh.update(*model, 0, 0, 1, dofs));
   const Eigen::VectorXd r = randomVector(Eigen::Index(dofs.size()), 2);
   Eigen::VectorXd a, b;
