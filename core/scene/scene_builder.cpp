@@ -244,17 +244,6 @@ std::optional<SceneSolidPart> buildSolidPart(const SceneSource& source,
     throw std::logic_error("the element plan does not match the level-K cells");
   clock.lap("cells");
 
-  // The node-gradient stencils (each step's state needs them)
-  BuildStage stencil(progress, 0.04, 0.05, "gradient stencil");
-  if (!stencil.start()) return std::nullopt;
-  // The fit keeps the average's rows where it cannot fit: made from it, not anew.
-  const NodeGradientStencil& average =
-      geometry->gradientStencils[static_cast<size_t>(GradientScheme::Average)] =
-          nodeGradientStencil(geometry->cellMesh, GradientScheme::Average);
-  geometry->gradientStencils[static_cast<size_t>(GradientScheme::Fit)] =
-      quadraticFitStencil(geometry->cellMesh, average);
-  clock.lap("stencil");
-
   // The control mesh for display, with the top layer pinned
   const Topology& controlTopology = subdivision->topologies.front();
   geometry->restControl = control.positions;
@@ -274,6 +263,21 @@ std::optional<SceneSolidPart> buildSolidPart(const SceneSource& source,
   solid->cellSize = cellSize;
   geometry->description = description + ", level " + std::to_string(settings.level);
   return SceneSolidPart{std::move(geometry), std::move(solid), std::move(surface)};
+}
+
+bool buildStencilPart(const SceneSolidPart& part, ProgressReporter* progress) {
+  SceneGeometry& geometry = *part.geometry;
+  StageClock clock(geometry.stageMs);
+  BuildStage stencil(progress, 0.04, 0.05, "gradient stencil");
+  if (!stencil.start()) return false;
+  // The fit keeps the average's rows where it cannot fit: made from it, not anew.
+  const NodeGradientStencil& average =
+      geometry.gradientStencils[static_cast<size_t>(GradientScheme::Average)] =
+          nodeGradientStencil(geometry.cellMesh, GradientScheme::Average);
+  geometry.gradientStencils[static_cast<size_t>(GradientScheme::Fit)] =
+      quadraticFitStencil(geometry.cellMesh, average);
+  clock.lap("stencil");
+  return true;
 }
 
 bool buildSurfacePart(const SceneSolidPart& part, ProgressReporter* progress) {
@@ -331,6 +335,11 @@ std::optional<SceneSolidPart> buildSceneSolid(const SceneSource& source,
   return namingTheFile(source, [&] { return buildSolidPart(source, settings, sceneId, progress); });
 }
 
+bool buildSceneStencils(const SceneSource& source, const SceneSolidPart& part,
+                        ProgressReporter* progress) {
+  return namingTheFile(source, [&] { return buildStencilPart(part, progress); });
+}
+
 bool buildSceneSurface(const SceneSource& source, const SceneSolidPart& part,
                        ProgressReporter* progress) {
   return namingTheFile(source, [&] { return buildSurfacePart(part, progress); });
@@ -340,7 +349,9 @@ std::optional<SceneBuildPhase1> buildSceneGeometry(const SceneSource& source,
                                                    const SceneSettings& settings, uint64_t sceneId,
                                                    ProgressReporter* progress) {
   std::optional<SceneSolidPart> part = buildSceneSolid(source, settings, sceneId, progress);
-  if (!part || !buildSceneSurface(source, *part, progress)) return std::nullopt;
+  if (!part || !buildSceneStencils(source, *part, progress) ||
+      !buildSceneSurface(source, *part, progress))
+    return std::nullopt;
   return SceneBuildPhase1{std::move(part->geometry), std::move(part->solid)};
 }
 

@@ -145,24 +145,27 @@ std::optional<SceneBuildPhase1> buildSceneGeometry(const SceneSource& source,
                                                    const SceneSettings& settings, uint64_t sceneId,
                                                    ProgressReporter* progress = nullptr);
 
-/// Phase 1 in its two parts, so that phase 2 can start on the solid while the drawn surface is
-/// still being made (buildSceneGeometry runs them one after the other; scene_controller.h side
-/// by side).
-///  - buildSceneSolid: the source read, the cage, the cells and their element plan, the
-///    gradient stencils, the control mesh, its pins and the description. Phase 2 reads these
-///    fields of the geometry and no others.
-///  - buildSceneSurface: restPositions, restNormals, triangles, surface and embedding (what only
-///    the renderer reads), written while phase 2 may be reading the solid's fields.
+/// Phase 1 in three parts, so that phase 2 can start on the solid while the rest is made
+/// (buildSceneGeometry runs them one after the other; scene_controller.h side by side):
+///  - buildSceneSolid: the source read, the cage, the cells and their element plan, the control
+///    mesh, its pins and the description: what phase 2 builds its model from.
+///  - buildSceneStencils: the node-gradient stencils, which phase 2 needs from the end of its
+///    first step on (ScenePhysics::build waits for them there).
+///  - buildSceneSurface: restPositions, restNormals, triangles, surface and embedding, which only
+///    the renderer reads.
+/// Each part writes only its own fields of the geometry.
 struct SceneSurfaceInput;
 struct SceneSolidPart {
-  std::shared_ptr<SceneGeometry> geometry;  ///< the surface fields empty until buildSceneSurface
+  std::shared_ptr<SceneGeometry> geometry;  ///< the other parts' fields empty until they ran
   std::shared_ptr<const SceneSolid> solid;
   std::shared_ptr<const SceneSurfaceInput> surface;  ///< what the drawn surface is made from
 };
 std::optional<SceneSolidPart> buildSceneSolid(const SceneSource& source,
                                               const SceneSettings& settings, uint64_t sceneId,
                                               ProgressReporter* progress = nullptr);
-/// False when cancelled through `progress`; throws like buildSceneGeometry.
+/// These two return false when cancelled through `progress`, and throw like buildSceneGeometry.
+bool buildSceneStencils(const SceneSource& source, const SceneSolidPart& part,
+                        ProgressReporter* progress = nullptr);
 bool buildSceneSurface(const SceneSource& source, const SceneSolidPart& part,
                        ProgressReporter* progress = nullptr);
 

@@ -204,12 +204,14 @@ void SceneController::abandon(const Job& job) {
 }
 
 std::future<SceneController::PhysicsBuild> SceneController::startPhysics(
-    const Job& job, const SceneSolidPart& part) {
+    const Job& job, const SceneSolidPart& part, std::shared_future<void> stencilsReady) {
   // The job is copied: its progress reporter refers to it for as long as the build runs.
-  return std::async(std::launch::async, [this, job, geometry = part.geometry, solid = part.solid] {
+  return std::async(std::launch::async, [this, job, geometry = part.geometry, solid = part.solid,
+                                         stencilsReady = std::move(stencilsReady)] {
     ProgressReporter progress = progressFor(job);
     PhysicsBuild build;
-    build.physics = ScenePhysics::build(geometry, solid, job.settings, &progress, &build.stageMs);
+    build.physics = ScenePhysics::build(geometry, solid, job.settings, &progress, &build.stageMs,
+                                        stencilsReady);
     return build;
   });
 }
@@ -224,15 +226,22 @@ std::optional<SceneController::Phase2> SceneController::runPhase1(const Job& job
       abandon(job);
       return std::nullopt;
     }
-    physics = startPhysics(job, *part);
-    // The surface's stages only check for cancelling: the build's progress is phase 2's. Its
-    // loops run on this thread alone, so that phase 2's never wait for the shared workers.
+    // Phase 2 waits for the stencils only at the end of its first step. A promise left unkept
+    // (cancelled, failed) releases it with an exception that nobody reads.
+    std::promise<void> stencils;
+    physics = startPhysics(job, *part, stencils.get_future().share());
+    // The stencils' and the surface's stages only check for cancelling: the build's progress
+    // is phase 2's. Their loops run on this thread alone, so that phase 2's never wait for the
+    // shared workers.
     ProgressReporter surfaceProgress(
         [this, &job](double, std::string_view) { return !cancelled(job); });
     bool surfaceBuilt = false;
     {
       const InlineLoopsOnThisThread inlineLoops;
-      surfaceBuilt = buildSceneSurface(job.source, *part, &surfaceProgress);
+      if (buildSceneStencils(job.source, *part, &surfaceProgress)) {
+        stencils.set_value();
+        surfaceBuilt = buildSceneSurface(job.source, *part, &surfaceProgress);
+      }
     }
     if (!surfaceBuilt || cancelled(job)) {
       abandon(job);

@@ -122,7 +122,8 @@ class SceneController {
   bool cancelled(const Job& job) const;
   void abandon(const Job& job);
   std::optional<Phase2> runPhase1(const Job& job);  // nullopt: failed or cancelled
-  std::future<PhysicsBuild> startPhysics(const Job& job, const SceneSolidPart& part);
+  std::future<PhysicsBuild> startPhysics(const Job& job, const SceneSolidPart& part,
+                                         std::shared_future<void> stencilsReady);
   void runPhase2(Phase2& work);
   void finishJob(const Job& job, const std::string& error, const StageTimes* times);
   void builderLoop();

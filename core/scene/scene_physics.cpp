@@ -43,7 +43,8 @@ ScenePhysics::~ScenePhysics() = default;
 std::unique_ptr<ScenePhysics> ScenePhysics::build(std::shared_ptr<const SceneGeometry> geometry,
                                                   std::shared_ptr<const SceneSolid> solid,
                                                   const SceneSettings& settings,
-                                                  ProgressReporter* progress, StageTimes* stageMs) {
+                                                  ProgressReporter* progress, StageTimes* stageMs,
+                                                  std::shared_future<void> stencilsReady) {
   StageTimes times;
   StageClock clock(times);
   std::unique_ptr<ScenePhysics> physics(new ScenePhysics);
@@ -108,7 +109,7 @@ std::unique_ptr<ScenePhysics> ScenePhysics::build(std::shared_ptr<const SceneGeo
   // The first step (the implicit integrator factorises its preconditioner here)
   BuildStage first(progress, 0.21, 1.0, "first step");
   if (!first.start()) return nullptr;
-  physics->step();
+  physics->stepAfter(stencilsReady);
   clock.lap("first step");
   if (stageMs) stageMs->insert(stageMs->end(), times.begin(), times.end());
   return physics;
@@ -123,9 +124,12 @@ void ScenePhysics::setGravity(const Eigen::Vector3d& gravity) {
 
 double ScenePhysics::simulatedTime() const { return simulator_->time() - timeOrigin_; }
 
-StepReport ScenePhysics::step() {
+StepReport ScenePhysics::step() { return stepAfter({}); }
+
+StepReport ScenePhysics::stepAfter(const std::shared_future<void>& stateInputs) {
   const auto start = std::chrono::steady_clock::now();
   lastStep_ = player_ ? player_->step() : simulator_->step();
+  if (stateInputs.valid()) stateInputs.get();
   updateState();
   lastStepMs_ =
       std::chrono::duration<double, std::milli>(std::chrono::steady_clock::now() - start).count();

@@ -8,6 +8,7 @@
 // state gives the rest nodes of SceneGeometry exactly.
 
 #include <cstdint>
+#include <future>
 #include <memory>
 #include <string>
 #include <vector>
@@ -58,11 +59,14 @@ class ScenePhysics : private ToolContext {
   /// Phase 2: the elements, the simulator (top layer pinned, gravity, settings) and one first
   /// step (which factorises the implicit solver's preconditioner). Stage times are appended to
   /// `stageMs`. Returns null when cancelled through `progress`; throws std::runtime_error with a
-  /// sentence when the solid cannot be simulated (an inverted element, say).
+  /// sentence when the solid cannot be simulated (an inverted element, say). `stencilsReady`,
+  /// when valid: the geometry's gradient stencils are still being made on another thread
+  /// (scene_builder.h); the first step waits for them before it finds its state.
   static std::unique_ptr<ScenePhysics> build(std::shared_ptr<const SceneGeometry> geometry,
                                              std::shared_ptr<const SceneSolid> solid,
                                              const SceneSettings& settings,
-                                             ProgressReporter* progress, StageTimes* stageMs);
+                                             ProgressReporter* progress, StageTimes* stageMs,
+                                             std::shared_future<void> stencilsReady = {});
   ~ScenePhysics();
   ScenePhysics(const ScenePhysics&) = delete;
   ScenePhysics& operator=(const ScenePhysics&) = delete;
@@ -122,6 +126,8 @@ class ScenePhysics : private ToolContext {
   double simulatedTime() const;
 
  private:
+  // A step; before its state is found, waits for `stateInputs` when valid.
+  StepReport stepAfter(const std::shared_future<void>& stateInputs);
   ScenePhysics() = default;
   void setGravity(const Eigen::Vector3d& gravity);
   // ToolContext

@@ -13,6 +13,7 @@
 #include <cstdio>
 #include <filesystem>
 #include <fstream>
+#include <future>
 #include <thread>
 
 #include "fem/fem_mesh.h"
@@ -573,9 +574,10 @@ TEST(SceneController, ControlMeshScenes) {
 }
 
 TEST(SceneController, PhaseTwoNeedsOnlyTheSolidPartOfPhaseOne) {
-  // The window starts phase 2 on the solid part while the surface part is still being made: the
-  // physics must build and step the same without the surface, and the two parts must give the
-  // geometry that phase 1 in one piece gives.
+  // The window starts phase 2 on the solid part while the stencils and the surface are still
+  // being made: the physics must build and step the same, reading none of their fields until
+  // the stencils are announced, and the parts must give the geometry that phase 1 in one piece
+  // gives.
   SceneSettings settings;
   settings.cageCellsAcross = 4.0;
   for (const SceneSource& source : {controlMesh("house.json"), SceneSource{}}) {
@@ -585,9 +587,16 @@ TEST(SceneController, PhaseTwoNeedsOnlyTheSolidPartOfPhaseOne) {
     EXPECT_EQ(part->geometry->restPositions.rows(), 0);
     EXPECT_TRUE(part->geometry->triangles.empty());
     EXPECT_EQ(part->geometry->embedding.cells.size(), 0u);
-    auto early = ScenePhysics::build(part->geometry, part->solid, settings, nullptr, nullptr);
+    std::promise<void> stencils;
+    std::thread rest([&] {
+      EXPECT_TRUE(buildSceneStencils(source, *part));
+      stencils.set_value();
+      EXPECT_TRUE(buildSceneSurface(source, *part));
+    });
+    auto early = ScenePhysics::build(part->geometry, part->solid, settings, nullptr, nullptr,
+                                     stencils.get_future().share());
+    rest.join();
     ASSERT_NE(early, nullptr);
-    ASSERT_TRUE(buildSceneSurface(source, *part));
 
     const auto whole = buildSceneGeometry(source, settings, 1);
     ASSERT_TRUE(whole);
@@ -610,6 +619,11 @@ TEST(SceneController, PhaseTwoNeedsOnlyTheSolidPartOfPhaseOne) {
     }
     EXPECT_GT((physics->simulator().positions() - b.restControl).cwiseAbs().maxCoeff(), 0.0);
     EXPECT_EQ(early->simulator().positions(), physics->simulator().positions());
+    SceneFrame earlyFrame, frame;
+    early->fillFrame(earlyFrame);
+    physics->fillFrame(frame);
+    EXPECT_EQ(earlyFrame.nodes, frame.nodes);
+    EXPECT_TRUE(earlyFrame.gradients == frame.gradients);
   }
 }
 
