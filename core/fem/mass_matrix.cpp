@@ -131,6 +131,11 @@ SparseMatrix assembleNodeMatrix(const FemMesh& mesh, MassField field) {
   const int* outer = M.outerIndexPtr();
   const int* inner = M.innerIndexPtr();
   double* values = M.valuePtr();
+  // Where each column's diagonal entry is: the element matrices go into the lower triangle only
+  // (half the walk along each column), and the upper one is its mirror image.
+  std::vector<int> diagonal(mesh.numNodes());
+  for (uint32_t j = 0; j < mesh.numNodes(); ++j)
+    diagonal[j] = int(std::lower_bound(inner + outer[j], inner + outer[j + 1], int(j)) - inner);
 
   // Element matrices N^T diag(field * V) N, added in place (repeated nodes of pyramid apices
   // add up like any shared node).
@@ -152,19 +157,28 @@ SparseMatrix assembleNodeMatrix(const FemMesh& mesh, MassField field) {
       Me.noalias() = N.transpose() * weights.asDiagonal() * N;
     }
     // The element's nodes in increasing id order, so that each column's entries are found by
-    // one merge-like walk along the column instead of a binary search per entry.
+    // one merge-like walk down the column from its diagonal instead of a search per entry.
     const std::span<const uint32_t> ids = elementNodes(e);
     order.resize(ids.size());
     for (size_t a = 0; a < ids.size(); ++a) order[a] = static_cast<uint32_t>(a);
     std::sort(order.begin(), order.end(), [&](uint32_t x, uint32_t y) { return ids[x] < ids[y]; });
-    for (Eigen::Index b = 0; b < Me.cols(); ++b) {
-      const int* at = inner + outer[ids[b]];
-      for (const uint32_t a : order) {
+    for (size_t ob = 0; ob < order.size(); ++ob) {
+      const uint32_t b = order[ob];
+      const int* at = inner + diagonal[ids[b]];
+      for (size_t oa = ob; oa < order.size(); ++oa) {
+        const uint32_t a = order[oa];
         while (*at < static_cast<int>(ids[a])) ++at;  // the pattern holds every element node
-        values[at - inner] += Me(a, b);
+        // A node repeated in the element (a pyramid's apex) meets itself twice in the full
+        // matrix, (a, b) and (b, a), on the diagonal.
+        values[at - inner] += oa > ob && ids[a] == ids[b] ? 2.0 * Me(a, b) : Me(a, b);
       }
     }
   }
+  // The upper triangle: column i's rows above its diagonal are, in order, the columns j < i
+  // whose lower part holds row i.
+  std::vector<int> upper(outer, outer + mesh.numNodes());
+  for (uint32_t j = 0; j < mesh.numNodes(); ++j)
+    for (int k = diagonal[j] + 1; k < outer[j + 1]; ++k) values[upper[size_t(inner[k])]++] = values[k];
   return M;
 }
 
