@@ -62,8 +62,9 @@ class SceneController {
   BuildStatus buildStatus() const;
   /// Cancels the queued or running build; the current scene stays, no error is reported.
   void cancelBuild();
-  /// Observes the build's progress on the building thread (fraction, stage); returning false
-  /// cancels the build like cancelBuild(). For headless progress output and tests.
+  /// Observes the build's progress (fraction, stage) on the threads that build: phase 1's, and
+  /// phase 2's own; returning false cancels the build like cancelBuild(). For headless progress
+  /// output and tests.
   void setProgressObserver(ProgressCallback observer);
 
   /// Called (on the publishing thread, under the controller's lock: keep it short and do not call

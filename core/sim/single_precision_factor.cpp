@@ -8,7 +8,7 @@ namespace sculpt {
 void SinglePrecisionFactor::copy(const cholmod_factor& L) {
   n_ = 0;
   if (!L.is_super || !L.is_ll || L.xtype != CHOLMOD_REAL || L.dtype != CHOLMOD_DOUBLE ||
-      L.itype != CHOLMOD_INT || L.n == 0)
+      L.itype != CHOLMOD_INT || L.n == 0 || !L.Perm)
     return;
   const size_t supernodes = L.nsuper;
   const int* super = static_cast<const int*>(L.super);
