@@ -100,6 +100,40 @@ void BM_TricubicKernel(benchmark::State& state) {
 BENCHMARK(BM_TricubicKernel)->Args({2, 0})->Args({2, 1})->Args({3, 0})->Args({3, 1})
     ->Unit(benchmark::kMicrosecond);
 
+// The kernel on one affine element aligned with the axes (a cube of block3's interior at K = 2),
+// in the cache, through the general 3x3 inverse Jacobian (range(0) = 0) or through its one
+// nonzero per column (range(0) = 1, as the elastic pass runs such elements).
+void BM_TricubicKernelAxisAligned(benchmark::State& state) {
+  Block3& block = block3(2);
+  const FemMesh& mesh = block.model->mesh();
+  int8_t rows[3] = {0, 1, 2};
+  uint32_t element = 0;
+  while (element < mesh.numTricubic() &&
+         !axisAlignedRows(mesh.tricubicInverseJacobian[size_t(element) * 64], rows))
+    ++element;
+  if (element == mesh.numTricubic()) {
+    state.SkipWithError("block3 has no axis-aligned tricubic element");
+    return;
+  }
+  std::vector<double> rest(size_t(tricubicRestSize(true)));
+  packTricubicInverseJacobians(mesh.tricubicInverseJacobian.data() + size_t(element) * 64, true,
+                               rest.data());
+  packTricubicMaterial(mesh.gaussVolume.data() + size_t(element) * 64,
+                       mesh.gaussLame.data() + size_t(element) * 64, true, rest.data());
+  const TricubicPacked packed = tricubicPackedView(rest.data(), true, rest.data(), 0,
+                                                   state.range(0) == 1 ? rows : nullptr);
+  std::mt19937_64 rng(1);
+  std::normal_distribution<double> noise(0.0, 1e-3);
+  alignas(64) double u[192], gradient[192];
+  for (double& v : u) v = noise(rng);
+  const Eigen::Matrix3d R = Eigen::AngleAxisd(0.3, Eigen::Vector3d(1, 2, 3).normalized()).toRotationMatrix();
+  for (auto _ : state) {
+    benchmark::DoNotOptimize(tricubicElementKernel(u, packed, R, true, false, gradient));
+    benchmark::ClobberMemory();
+  }
+}
+BENCHMARK(BM_TricubicKernelAxisAligned)->Arg(0)->Arg(1)->Unit(benchmark::kNanosecond);
+
 void BM_NodesFromControl(benchmark::State& state) {
   Block3& block = block3(int(state.range(0)));
   Points nodes;

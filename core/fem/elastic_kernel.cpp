@@ -47,6 +47,7 @@ ElasticKernel::ElasticKernel(const FemMesh& mesh)
   const uint32_t numTricubic = mesh.numTricubic();
   tricubicRestOffset_.resize(numTricubic + 1);
   tricubicAffine_.resize(numTricubic);
+  tricubicAxisRows_.resize(numTricubic);
   tricubicRest_.clear();
   for (uint32_t e = 0; e < numTricubic; ++e) {
     const Eigen::Matrix3d* J = mesh.tricubicInverseJacobian.data() + size_t(e) * 64;
@@ -56,6 +57,8 @@ ElasticKernel::ElasticKernel(const FemMesh& mesh)
       affine = (J[q] - J[0]).cwiseAbs().maxCoeff() <= 1e-13 * scale;
     tricubicRestOffset_[e] = tricubicRest_.size();
     tricubicAffine_[e] = affine;
+    tricubicAxisRows_[e] = {-1, -1, -1};
+    if (affine && !axisAlignedRows(J[0], tricubicAxisRows_[e].data())) tricubicAxisRows_[e][0] = -1;
     tricubicRest_.resize(tricubicRest_.size() + size_t(tricubicRestSize(affine)));
     packTricubicInverseJacobians(J, affine, tricubicRest_.data() + tricubicRestOffset_[e]);
   }
@@ -359,7 +362,8 @@ double ElasticKernel::run(const Points& x, Mode mode, Points* out, bool withEner
           const TricubicPacked packed = tricubicPackedView(
               tricubicRest_.data() + tricubicRestOffset_[e], tricubicAffine_[e],
               tricubicRest_.data() + restEnd,
-              int(e + 1 < numTricubic ? tricubicRestOffset_[e + 2] - restEnd : 0));
+              int(e + 1 < numTricubic ? tricubicRestOffset_[e + 2] - restEnd : 0),
+              tricubicAxisRows_[e][0] >= 0 ? tricubicAxisRows_[e].data() : nullptr);
           elementEnergy = tricubicElementKernel(ue, packed, R, withRestTerm, withEnergy, gradient,
                                                 &barrierArgs);
         } else {

@@ -15,6 +15,7 @@
 // the update records R^T F of every element that has a point below the threshold.
 
 #include <Eigen/Core>
+#include <array>
 #include <vector>
 
 #include "fem/elastic_model.h"
@@ -124,6 +125,9 @@ class ElasticKernel {
   std::vector<double> tricubicRest_;
   std::vector<size_t> tricubicRestOffset_;  // element's start in tricubicRest_, then the end
   std::vector<bool> tricubicAffine_;        // one block of inverse Jacobians
+  // An affine element aligned with the axes: per column of its inverse Jacobian, the row of the
+  // one nonzero (tricubic_kernel.h); -1 in the first entry otherwise.
+  std::vector<std::array<int8_t, 3>> tricubicAxisRows_;
   std::vector<double> linearShapeGradient_, linearVolumeLambda_, linearVolumeMu_;  // [l][a*3+c][q]
 };
 

@@ -1,6 +1,7 @@
 #include "fem/tricubic_kernel.h"
 
 #include <Eigen/Core>
+#include <cmath>
 
 #include "fem/quadrature.h"
 #include "subdiv/tricubic_patch.h"
@@ -54,14 +55,37 @@ void packTricubicMaterial(const double* volume, const LameParameters* lame, bool
 }
 
 TricubicPacked tricubicPackedView(const double* block, bool affine, const double* prefetch,
-                                  int prefetchCount) {
+                                  int prefetchCount, const int8_t* axisRows) {
   const double* material = block + tricubicRestSize(affine) - 128;
-  return {block, affine ? 0 : 36, material, material + 64, prefetch, prefetchCount};
+  return {block,    affine ? 0 : 36, material, material + 64, prefetch, prefetchCount,
+          affine ? axisRows : nullptr};
 }
 
-double tricubicElementKernel(const double* u, const TricubicPacked& element,
-                             const Eigen::Matrix3d& R, bool withRestTerm, bool withEnergy,
-                             double* gradient, BarrierArgs* barrier) {
+bool axisAlignedRows(const Eigen::Matrix3d& inverseJacobian, int8_t rows[3]) {
+  const double zero = 1e-13 * inverseJacobian.cwiseAbs().maxCoeff();
+  bool rowUsed[3] = {false, false, false};
+  for (int col = 0; col < 3; ++col) {
+    int nonzero = -1;
+    for (int r = 0; r < 3; ++r) {
+      if (std::abs(inverseJacobian(r, col)) <= zero) continue;
+      if (nonzero >= 0) return false;
+      nonzero = r;
+    }
+    if (nonzero < 0 || rowUsed[nonzero]) return false;
+    rowUsed[nonzero] = true;
+    rows[col] = static_cast<int8_t>(nonzero);
+  }
+  return true;
+}
+
+namespace {
+
+// The kernel for a general inverse Jacobian (kAxisAligned false) or for one with a single
+// nonzero per column (element.axisRows): M = G Jinv and H = S Jinv^T are then one product per
+// entry instead of three.
+template <bool kAxisAligned>
+double tricubicKernel(const double* u, const TricubicPacked& element, const Eigen::Matrix3d& R,
+                      bool withRestTerm, bool withEnergy, double* gradient, BarrierArgs* barrier) {
   const Tables& T = tables();
   // Every stage below works on whole V4 rows (four consecutive values of the fastest index):
   // written out explicitly, since GCC otherwise unrolls the small loops into scalar code.
@@ -116,6 +140,11 @@ double tricubicElementKernel(const double* u, const TricubicPacked& element,
     BT[g] = V4(T.BT[g][0], T.BT[g][1], T.BT[g][2], T.BT[g][3]);
     DT[g] = V4(T.DT[g][0], T.DT[g][1], T.DT[g][2], T.DT[g][3]);
   }
+  // An axis-aligned element's one nonzero per column of Jinv (the same at every Gauss point).
+  V4 axisScale[3];
+  if constexpr (kAxisAligned)
+    for (int col = 0; col < 3; ++col)
+      axisScale[col] = V4::Constant(element.inverseJacobian[(element.axisRows[col] * 3 + col) * 4]);
   // Stage C and the stresses, four Gauss points (k = 0..3) at a time. The displacement
   // gradient is rotated into the element frame first (M = R^T G), so the stress needs no
   // rotation until it is turned back into node forces.
@@ -139,16 +168,22 @@ double tricubicElementKernel(const double* u, const TricubicPacked& element,
       }
     }
     V4 J[3][3];
-    for (int r = 0; r < 3; ++r)
-      for (int col = 0; col < 3; ++col)
-        J[r][col] = load(element.inverseJacobian + ij * element.jacobianStride + (r * 3 + col) * 4);
+    if constexpr (!kAxisAligned)
+      for (int r = 0; r < 3; ++r)
+        for (int col = 0; col < 3; ++col)
+          J[r][col] =
+              load(element.inverseJacobian + ij * element.jacobianStride + (r * 3 + col) * 4);
     const V4 vl = load(element.volumeLambda + ij * 4);
     const V4 vm = load(element.volumeMu + ij * 4);
     // M = G Jinv = R^T F (G is already in the element frame).
     V4 M[3][3];
     for (int r = 0; r < 3; ++r)
-      for (int col = 0; col < 3; ++col)
-        M[r][col] = G[r][0] * J[0][col] + G[r][1] * J[1][col] + G[r][2] * J[2][col];
+      for (int col = 0; col < 3; ++col) {
+        if constexpr (kAxisAligned)
+          M[r][col] = G[r][element.axisRows[col]] * axisScale[col];
+        else
+          M[r][col] = G[r][0] * J[0][col] + G[r][1] * J[1][col] + G[r][2] * J[2][col];
+      }
     V4 e[3][3];
     for (int r = 0; r < 3; ++r)
       for (int s = r; s < 3; ++s) e[r][s] = 0.5 * (M[r][s] + M[s][r]) + E0[r][s];
@@ -172,9 +207,15 @@ double tricubicElementKernel(const double* u, const TricubicPacked& element,
     if (!gradient) continue;
     // H = S Jinv^T, in the element frame.
     for (int c = 0; c < 3; ++c) {
-      store(HU[ij][c], S[c][0] * J[0][0] + S[c][1] * J[0][1] + S[c][2] * J[0][2]);
-      store(HV[ij][c], S[c][0] * J[1][0] + S[c][1] * J[1][1] + S[c][2] * J[1][2]);
-      store(HW[ij][c], S[c][0] * J[2][0] + S[c][1] * J[2][1] + S[c][2] * J[2][2]);
+      if constexpr (kAxisAligned) {
+        double* H[3] = {HU[ij][c], HV[ij][c], HW[ij][c]};  // by row of Jinv
+        for (int col = 0; col < 3; ++col)
+          store(H[element.axisRows[col]], S[c][col] * axisScale[col]);
+      } else {
+        store(HU[ij][c], S[c][0] * J[0][0] + S[c][1] * J[0][1] + S[c][2] * J[0][2]);
+        store(HV[ij][c], S[c][0] * J[1][0] + S[c][1] * J[1][1] + S[c][2] * J[1][2]);
+        store(HW[ij][c], S[c][0] * J[2][0] + S[c][1] * J[2][1] + S[c][2] * J[2][2]);
+      }
     }
   }
   const double energy = energyLanes.sum();
@@ -224,6 +265,16 @@ double tricubicElementKernel(const double* u, const TricubicPacked& element,
       store(gradient + c * 64 + n, R(c, 0) * load(ul + n) + R(c, 1) * load(ul + 64 + n) +
                                        R(c, 2) * load(ul + 128 + n));
   return energy;
+}
+
+}  // namespace
+
+double tricubicElementKernel(const double* u, const TricubicPacked& element,
+                             const Eigen::Matrix3d& R, bool withRestTerm, bool withEnergy,
+                             double* gradient, BarrierArgs* barrier) {
+  return element.axisRows
+             ? tricubicKernel<true>(u, element, R, withRestTerm, withEnergy, gradient, barrier)
+             : tricubicKernel<false>(u, element, R, withRestTerm, withEnergy, gradient, barrier);
 }
 
 }  // namespace sculpt

@@ -5,6 +5,7 @@
 // are processed four at a time (the k direction) so that the compiler can vectorise.
 
 #include <Eigen/Core>
+#include <cstdint>
 
 #include "fem/barrier_stress.h"
 #include "fem/material.h"
@@ -19,7 +20,15 @@ struct TricubicPacked {
   const double* volumeMu;         ///< [i*16 + j*4 + k]: Gauss volume times mu
   const double* prefetch;         ///< data the next call will read (fetched into the cache)
   int prefetchCount;              ///< its length in doubles
+  /// An affine element whose inverse Jacobian has one nonzero per column (a box aligned with
+  /// the axes, in any order: the cells of a cage or block): for each column, the row of that
+  /// entry. The kernel then scales instead of multiplying by the 3x3 matrix. Null otherwise.
+  const int8_t* axisRows = nullptr;
 };
+
+/// For an affine element's inverse Jacobian: the row of each column's one nonzero entry, when
+/// every other entry is zero to rounding (1e-13 of the largest); false otherwise.
+bool axisAlignedRows(const Eigen::Matrix3d& inverseJacobian, int8_t rows[3]);
 
 /// One element's rest data as one block of doubles: its inverse Jacobians in the kernel's layout
 /// [i*4 + j][row*3 + col][k] (a single [row*3 + col][k] block for an affine element, whose 64
@@ -34,7 +43,7 @@ void packTricubicMaterial(const double* volume, const LameParameters* lame, bool
                           double* block);
 /// The kernel's view of a block, with the data to prefetch for the next call.
 TricubicPacked tricubicPackedView(const double* block, bool affine, const double* prefetch,
-                                  int prefetchCount);
+                                  int prefetchCount, const int8_t* axisRows = nullptr);
 
 /// u: 64 node values (displacements or a direction), coordinate-major: coordinate c of node
 /// a*16+b*4+g at u[c*64 + a*16+b*4+g]. Writes the node gradient to `gradient` (same layout)
