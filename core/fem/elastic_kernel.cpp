@@ -57,8 +57,9 @@ ElasticKernel::ElasticKernel(const FemMesh& mesh)
       affine = (J[q] - J[0]).cwiseAbs().maxCoeff() <= 1e-13 * scale;
     tricubicRestOffset_[e] = tricubicRest_.size();
     tricubicAffine_[e] = affine;
-    tricubicAxisRows_[e] = {-1, -1, -1};
-    if (affine && !axisAlignedRows(J[0], tricubicAxisRows_[e].data())) tricubicAxisRows_[e][0] = -1;
+    std::array<int8_t, 3> rows{-1, -1, -1};
+    if (!affine || !axisAlignedRows(J[0], rows.data())) rows[0] = -1;
+    tricubicAxisRows_[e] = rows;
     tricubicRest_.resize(tricubicRest_.size() + size_t(tricubicRestSize(affine)));
     packTricubicInverseJacobians(J, affine, tricubicRest_.data() + tricubicRestOffset_[e]);
   }

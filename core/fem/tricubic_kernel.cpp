@@ -57,8 +57,8 @@ void packTricubicMaterial(const double* volume, const LameParameters* lame, bool
 TricubicPacked tricubicPackedView(const double* block, bool affine, const double* prefetch,
                                   int prefetchCount, const int8_t* axisRows) {
   const double* material = block + tricubicRestSize(affine) - 128;
-  return {block,    affine ? 0 : 36, material, material + 64, prefetch, prefetchCount,
-          affine ? axisRows : nullptr};
+  return {block, affine ? 0 : 36, material, material + 64,
+          prefetch, prefetchCount, affine ? axisRows : nullptr};
 }
 
 bool axisAlignedRows(const Eigen::Matrix3d& inverseJacobian, int8_t rows[3]) {
