@@ -118,9 +118,11 @@ void BM_TricubicKernelAxisAligned(benchmark::State& state) {
   const FemMesh& mesh = block.model->mesh();
   int8_t rows[3] = {0, 1, 2};
   uint32_t element = 0;
-  while (element < mesh.numTricubic() &&
-         !axisAlignedRows(mesh.tricubicInverseJacobian[size_t(element) * 64], rows))
-    ++element;
+  auto axisAligned = [&](uint32_t e) {
+    const Eigen::Matrix3d* J = mesh.tricubicInverseJacobian.data() + size_t(e) * 64;
+    return affineInverseJacobians(J) && axisAlignedRows(J[0], rows);
+  };
+  while (element < mesh.numTricubic() && !axisAligned(element)) ++element;
   if (element == mesh.numTricubic()) {
     state.SkipWithError("block3 has no axis-aligned tricubic element");
     return;

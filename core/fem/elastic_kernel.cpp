@@ -51,10 +51,7 @@ ElasticKernel::ElasticKernel(const FemMesh& mesh)
   tricubicRest_.clear();
   for (uint32_t e = 0; e < numTricubic; ++e) {
     const Eigen::Matrix3d* J = mesh.tricubicInverseJacobian.data() + size_t(e) * 64;
-    const double scale = J[0].cwiseAbs().maxCoeff();
-    bool affine = true;
-    for (int q = 1; q < 64 && affine; ++q)
-      affine = (J[q] - J[0]).cwiseAbs().maxCoeff() <= 1e-13 * scale;
+    const bool affine = affineInverseJacobians(J);
     tricubicRestOffset_[e] = tricubicRest_.size();
     tricubicAffine_[e] = affine;
     std::array<int8_t, 3> rows{-1, -1, -1};

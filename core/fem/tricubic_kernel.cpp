@@ -61,6 +61,14 @@ TricubicPacked tricubicPackedView(const double* block, bool affine, const double
           prefetch, prefetchCount, affine ? axisRows : nullptr};
 }
 
+bool affineInverseJacobians(const Eigen::Matrix3d* inverseJacobian) {
+  const double scale = inverseJacobian[0].cwiseAbs().maxCoeff();
+  for (int q = 1; q < 64; ++q)
+    if ((inverseJacobian[q] - inverseJacobian[0]).cwiseAbs().maxCoeff() > 1e-13 * scale)
+      return false;
+  return true;
+}
+
 bool axisAlignedRows(const Eigen::Matrix3d& inverseJacobian, int8_t rows[3]) {
   const double zero = 1e-13 * inverseJacobian.cwiseAbs().maxCoeff();
   bool rowUsed[3] = {false, false, false};

@@ -26,6 +26,9 @@ struct TricubicPacked {
   const int8_t* axisRows = nullptr;
 };
 
+/// True when an element's 64 inverse Jacobians (q = i*16 + j*4 + k) agree to rounding (1e-13 of
+/// the first's largest entry): its rest map is affine, and one block of them is stored.
+bool affineInverseJacobians(const Eigen::Matrix3d* inverseJacobian);
 /// For an affine element's inverse Jacobian: the row of each column's one nonzero entry, when
 /// every other entry is zero to rounding (1e-13 of the largest); false otherwise.
 bool axisAlignedRows(const Eigen::Matrix3d& inverseJacobian, int8_t rows[3]);

@@ -27,6 +27,7 @@ struct SceneSurfaceInput {
   SceneKind kind = SceneKind::DefaultBunny;
   SurfaceMesh source;    // the surface as read (the bunny, an imported surface)
   int renderLevel = 0;   // a control mesh: Catmull–Clark levels of its boundary
+  Topology controlTopology;
 };
 
 namespace {
@@ -171,7 +172,8 @@ std::optional<SceneSolidPart> buildSolidPart(const SceneSource& source,
   surface->kind = source.kind;
   surface->renderLevel = settings.renderLevel;
   CellComplex control;
-  double cellSize = 0.0;
+  double cellSize = 0.0;  // a cage's own, or else the mean control edge (below)
+  bool caged = false;
   std::string description;
   if (source.kind == SceneKind::ControlMesh) {
     try {
@@ -180,7 +182,6 @@ std::optional<SceneSolidPart> buildSolidPart(const SceneSource& source,
       throw std::runtime_error(std::string("cannot load the control mesh ") + e.what());
     }
     throwIfInvalid(control, sourceName);
-    cellSize = meanEdgeLength(control, buildTopology(control));
     description = sourceName + ", surface at Catmull-Clark level " +
                   std::to_string(settings.renderLevel);
     clock.lap("read");
@@ -191,7 +192,6 @@ std::optional<SceneSolidPart> buildSolidPart(const SceneSource& source,
     if (source.project) {  // the user's (possibly edited) cage
       control = source.project->controlMesh;
       throwIfInvalid(control, sourceName);
-      cellSize = meanEdgeLength(control, buildTopology(control));
       description = fileName(path) + " in a cage of " + std::to_string(control.numCells()) +
                     " cells";
     } else {
@@ -200,6 +200,7 @@ std::optional<SceneSolidPart> buildSolidPart(const SceneSource& source,
       // Around the surface as read: the margin covers the refined surface's difference.
       Cage built = cageAround(surface->source, settings, path);
       cellSize = built.cellSize;
+      caged = true;
       control = std::move(built.control);
       description = fileName(path) + " in a " + std::to_string(built.gridSize[0]) + "x" +
                     std::to_string(built.gridSize[1]) + "x" + std::to_string(built.gridSize[2]) +
@@ -207,14 +208,18 @@ std::optional<SceneSolidPart> buildSolidPart(const SceneSource& source,
     }
     clock.lap("cage");
   }
+  // The control mesh's topology, once: the cell size, the refusal below and a control mesh's
+  // drawn surface need it.
+  surface->controlTopology = buildTopology(control);
+  const Topology& topology = surface->controlTopology;
+  if (!caged) cellSize = meanEdgeLength(control, topology);
 
   // The solid at level K and its cells
   BuildStage refineSolid(progress, 0.02, 0.03, "subdividing the solid");
   if (!refineSolid.start()) return std::nullopt;
   // Phase 2 builds the elements and the solver on these cells: refuse before either phase
   // allocates when the whole would not fit.
-  if (const std::string refusal =
-          refinementRefusal(buildTopology(control), settings.level, sourceName, kSimulation);
+  if (const std::string refusal = refinementRefusal(topology, settings.level, sourceName, kSimulation);
       !refusal.empty())
     throw std::runtime_error(refusal);
   std::optional<Subdivision> subdivision = subdivide(control, settings.level, refineSolid.reporter());
@@ -288,8 +293,7 @@ bool buildSurfacePart(const SceneSolidPart& part, ProgressReporter* progress) {
   if (!refine.start()) return false;
   SurfaceMesh display;
   if (input.kind == SceneKind::ControlMesh) {
-    const CellComplex& control = part.solid->control;
-    display = controlMeshSurface(control, buildTopology(control), input.renderLevel);
+    display = controlMeshSurface(part.solid->control, input.controlTopology, input.renderLevel);
   } else {
     // The bunny is drawn Loop-refined three times onto its limit surface (235k triangles, the
     // issue's "about 200k").

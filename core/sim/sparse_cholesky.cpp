@@ -119,8 +119,8 @@ bool SparseCholesky::factor(const SparseMatrix& S) {
     auto& llt = impl_->supernodal;
     llt.factorize(S);
     valid_ = llt.info() == Eigen::Success;
-    impl_->single = {};
-    if (valid_) impl_->single.copy(*llt.factor());
+    if (valid_) impl_->single.copy(*llt.factor());  // reuses the copy's storage
+    else impl_->single = {};
   } else {
     auto& llt = impl_->simplicial;
     llt.factorize(S);

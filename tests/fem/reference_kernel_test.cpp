@@ -266,11 +266,8 @@ void compareWithNaive(bool painted, bool boxes = false) {
   uint32_t axisAligned = 0;
   for (uint32_t e = 0; e < mesh.numTricubic(); ++e) {
     const Eigen::Matrix3d* J = mesh.tricubicInverseJacobian.data() + size_t(e) * 64;
-    bool affine = true;
-    for (int q = 1; q < 64 && affine; ++q)
-      affine = (J[q] - J[0]).cwiseAbs().maxCoeff() <= 1e-13 * J[0].cwiseAbs().maxCoeff();
     int8_t rows[3];
-    axisAligned += affine && axisAlignedRows(J[0], rows);
+    axisAligned += affineInverseJacobians(J) && axisAlignedRows(J[0], rows);
   }
   std::printf("%u of %u tricubic elements are affine and aligned with the axes\n", axisAligned,
               mesh.numTricubic());
