@@ -110,30 +110,36 @@ void BM_TricubicKernel(benchmark::State& state) {
 BENCHMARK(BM_TricubicKernel)->Args({2, 0})->Args({2, 1})->Args({3, 0})->Args({3, 1})
     ->Unit(benchmark::kMicrosecond);
 
-// The kernel on one affine element aligned with the axes (a cube of block3's interior at K = 2),
-// in the cache, through the general 3x3 inverse Jacobian (range(0) = 0) or through its one
-// nonzero per column (range(0) = 1, as the elastic pass runs such elements).
-void BM_TricubicKernelAxisAligned(benchmark::State& state) {
-  Block3& block = block3(2);
-  const FemMesh& mesh = block.model->mesh();
+// One affine element aligned with the axes (a cube of block3's interior at K = 2), its rest data
+// packed as the elastic pass packs it; empty `rest` when block3 has none.
+struct AxisAlignedElement {
+  std::vector<double> rest;
   int8_t rows[3] = {0, 1, 2};
-  uint32_t element = 0;
-  auto axisAligned = [&](uint32_t e) {
-    const Eigen::Matrix3d* J = mesh.tricubicInverseJacobian.data() + size_t(e) * 64;
-    return affineInverseJacobians(J) && axisAlignedRows(J[0], rows);
-  };
-  while (element < mesh.numTricubic() && !axisAligned(element)) ++element;
-  if (element == mesh.numTricubic()) {
+  AxisAlignedElement() {
+    const FemMesh& mesh = block3(2).model->mesh();
+    for (uint32_t e = 0; e < mesh.numTricubic(); ++e) {
+      const Eigen::Matrix3d* J = mesh.tricubicInverseJacobian.data() + size_t(e) * 64;
+      if (!affineInverseJacobians(J) || !axisAlignedRows(J[0], rows)) continue;
+      rest.resize(size_t(tricubicRestSize(true)));
+      packTricubicInverseJacobians(J, true, rest.data());
+      packTricubicMaterial(mesh.gaussVolume.data() + size_t(e) * 64,
+                           mesh.gaussLame.data() + size_t(e) * 64, true, rest.data());
+      return;
+    }
+  }
+};
+
+// The kernel on that element, in the cache, through the general 3x3 inverse Jacobian
+// (range(0) = 0) or through its one nonzero per column (range(0) = 1, as the elastic pass runs
+// such elements).
+void BM_TricubicKernelAxisAligned(benchmark::State& state) {
+  const AxisAlignedElement element;
+  if (element.rest.empty()) {
     state.SkipWithError("block3 has no axis-aligned tricubic element");
     return;
   }
-  std::vector<double> rest(size_t(tricubicRestSize(true)));
-  packTricubicInverseJacobians(mesh.tricubicInverseJacobian.data() + size_t(element) * 64, true,
-                               rest.data());
-  packTricubicMaterial(mesh.gaussVolume.data() + size_t(element) * 64,
-                       mesh.gaussLame.data() + size_t(element) * 64, true, rest.data());
-  const TricubicPacked packed = tricubicPackedView(rest.data(), true, rest.data(), 0,
-                                                   state.range(0) == 1 ? rows : nullptr);
+  const TricubicPacked packed = tricubicPackedView(element.rest.data(), true, element.rest.data(),
+                                                   0, state.range(0) == 1 ? element.rows : nullptr);
   KernelInput in;
   for (auto _ : state) {
     benchmark::DoNotOptimize(tricubicElementKernel(in.u, packed, in.R, true, false, in.gradient));
@@ -141,6 +147,33 @@ void BM_TricubicKernelAxisAligned(benchmark::State& state) {
   }
 }
 BENCHMARK(BM_TricubicKernelAxisAligned)->Arg(0)->Arg(1)->Unit(benchmark::kNanosecond);
+
+// The inversion barrier's cost where no Gauss point is below its threshold (the usual case), on
+// the same element: without the barrier (range(0) = 0), with it in a gradient pass that records
+// the states (1, as a step's first pass runs), and in a Hessian product of an element with no
+// recorded state (2).
+void BM_TricubicKernelBarrierCheck(benchmark::State& state) {
+  const AxisAlignedElement element;
+  if (element.rest.empty()) {
+    state.SkipWithError("block3 has no axis-aligned tricubic element");
+    return;
+  }
+  const TricubicPacked packed =
+      tricubicPackedView(element.rest.data(), true, element.rest.data(), 0, element.rows);
+  const InversionBarrier settings;
+  alignas(64) double record[9 * 64];
+  const int mode = int(state.range(0));
+  KernelInput in;
+  for (auto _ : state) {
+    BarrierArgs args;
+    if (mode >= 1) args.settings = &settings;
+    if (mode == 1) args.record = record;
+    benchmark::DoNotOptimize(tricubicElementKernel(in.u, packed, in.R, mode != 2, false,
+                                                   in.gradient, mode == 0 ? nullptr : &args));
+    benchmark::ClobberMemory();
+  }
+}
+BENCHMARK(BM_TricubicKernelBarrierCheck)->Arg(0)->Arg(1)->Arg(2)->Unit(benchmark::kNanosecond);
 
 void BM_NodesFromControl(benchmark::State& state) {
   Block3& block = block3(int(state.range(0)));

@@ -44,18 +44,23 @@ void cofactor(const V (&A)[3][3], V (&cof)[3][3]) {
   }
 }
 
+// det(A) through cof(A)'s first column.
+template <class V>
+V determinant(const V (&A)[3][3]) {
+  V first[3];
+  cofactorColumn(A, 0, first);
+  return A[0][0] * first[0] + A[1][0] * first[1] + A[2][0] * first[2];
+}
+
 }  // namespace barrier_detail
 
 /// Gradient mode at the lanes' A (= R^T F): adds dpsi/dA to S and returns psi per lane (zero
 /// where J >= threshold). `bulk` is V (lambda + 2 mu / 3) per lane. `any` is set when a lane
 /// is below the threshold.
 template <class V>
-V addBarrierStress(const V (&A)[3][3], const V& bulk, const InversionBarrier& b, V (&S)[3][3],
-                   bool& any) {
-  V first[3];
-  barrier_detail::cofactorColumn(A, 0, first);
-  const V J = A[0][0] * first[0] + A[1][0] * first[1] + A[2][0] * first[2];
-  const V t = (b.threshold - J).max(0.0);
+[[gnu::noinline]] V addBarrierStress(const V (&A)[3][3], const V& bulk, const InversionBarrier& b,
+                                     V (&S)[3][3], bool& any) {
+  const V t = (b.threshold - barrier_detail::determinant(A)).max(0.0);
   if (!(t > 0.0).any()) return V::Zero();
   any = true;
   V cof[3][3];
@@ -70,8 +75,8 @@ V addBarrierStress(const V (&A)[3][3], const V& bulk, const InversionBarrier& b,
 /// Hessian mode: adds the barrier's second derivative at the recorded A applied to the
 /// direction's dA to S (see InversionBarrier::exactHessian for what is kept).
 template <class V>
-void addBarrierHessian(const V (&A)[3][3], const V (&dA)[3][3], const V& bulk,
-                       const InversionBarrier& b, V (&S)[3][3]) {
+[[gnu::noinline]] void addBarrierHessian(const V (&A)[3][3], const V (&dA)[3][3], const V& bulk,
+                                         const InversionBarrier& b, V (&S)[3][3]) {
   V cof[3][3];
   barrier_detail::cofactor(A, cof);
   const V J = A[0][0] * cof[0][0] + A[1][0] * cof[1][0] + A[2][0] * cof[2][0];
@@ -102,26 +107,32 @@ void addBarrierHessian(const V (&A)[3][3], const V (&dA)[3][3], const V& bulk,
 /// lanes' R^T grad u) gets its barrier stress added to S, is recorded at `block` (9 values per
 /// lane, lanes fastest) and psi is returned; otherwise (Hessian mode, M the direction's
 /// R^T grad d) the recorded state's second derivative along M is added. Zero when nothing acts.
+/// Inlined into the kernels: nearly every point is far above the threshold, and there J alone
+/// (a few products on values in registers) decides; the stress is computed out of line.
 template <class V>
-V applyBarrier(BarrierArgs& b, const V (&M)[3][3], const Eigen::Matrix3d& R, const V& volumeLambda,
-               const V& volumeMu, bool gradientMode, size_t block, V (&S)[3][3]) {
+[[gnu::always_inline]] inline V applyBarrier(BarrierArgs& b, const V (&M)[3][3],
+                                             const Eigen::Matrix3d& R, const V& volumeLambda,
+                                             const V& volumeMu, bool gradientMode, size_t block,
+                                             V (&S)[3][3]) {
   constexpr int kLanes = V::SizeAtCompileTime;
-  const V bulk = volumeLambda + (2.0 / 3.0) * volumeMu;
   V A[3][3];
-  V psi = V::Zero();
   if (gradientMode) {
     for (int r = 0; r < 3; ++r)
       for (int c = 0; c < 3; ++c) A[r][c] = M[r][c] + R(c, r);
-    if (b.settings) psi = addBarrierStress(A, bulk, *b.settings, S, b.active);
     if (b.record)
       for (int rc = 0; rc < 9; ++rc)
         Eigen::Map<V>(b.record + (block * 9 + size_t(rc)) * kLanes) = A[rc / 3][rc % 3];
-  } else if (b.state && b.settings) {
-    for (int rc = 0; rc < 9; ++rc)
-      A[rc / 3][rc % 3] = Eigen::Map<const V>(b.state + (block * 9 + size_t(rc)) * kLanes);
-    addBarrierHessian(A, M, bulk, *b.settings, S);
+    if (!b.settings) return V::Zero();
+    if (!(barrier_detail::determinant(A) < b.settings->threshold).any()) return V::Zero();
+    const V bulk = volumeLambda + (2.0 / 3.0) * volumeMu;
+    return addBarrierStress(A, bulk, *b.settings, S, b.active);
   }
-  return psi;
+  if (!b.state || !b.settings) return V::Zero();
+  for (int rc = 0; rc < 9; ++rc)
+    A[rc / 3][rc % 3] = Eigen::Map<const V>(b.state + (block * 9 + size_t(rc)) * kLanes);
+  const V bulk = volumeLambda + (2.0 / 3.0) * volumeMu;
+  addBarrierHessian(A, M, bulk, *b.settings, S);
+  return V::Zero();
 }
 
 }  // namespace sculpt

@@ -160,6 +160,12 @@ double tricubicKernel(const double* u, const TricubicPacked& element, const Eige
   V4 energyLanes = V4::Zero();
   const int prefetchLines = (element.prefetchCount * 8 + 63) / 64;
   const char* prefetch = reinterpret_cast<const char*>(element.prefetch);
+  // The barrier's arguments as a local copy, which the record's stores cannot alias. A Hessian
+  // product of an element without a recorded state has nothing to do with it.
+  const bool withBarrier =
+      barrier && (withRestTerm ? barrier->settings || barrier->record
+                               : barrier->settings && barrier->state);
+  BarrierArgs barrierArgs = withBarrier ? *barrier : BarrierArgs{};
   for (int ij = 0; ij < 16; ++ij) {
     // A sixteenth of the next element's rest data per Gauss-point block.
     for (int line = ij * prefetchLines / 16; line < (ij + 1) * prefetchLines / 16; ++line)
@@ -203,8 +209,8 @@ double tricubicKernel(const double* u, const TricubicPacked& element, const Eige
         if (r == s) S[r][s] += vl * trace;
         else S[s][r] = S[r][s];
       }
-    if (barrier && (barrier->settings || barrier->record)) {
-      const V4 psi = applyBarrier(*barrier, M, R, vl, vm, withRestTerm, size_t(ij), S);
+    if (withBarrier) {
+      const V4 psi = applyBarrier(barrierArgs, M, R, vl, vm, withRestTerm, size_t(ij), S);
       if (withEnergy) energyLanes += psi;
     }
     if (withEnergy) {
@@ -226,6 +232,7 @@ double tricubicKernel(const double* u, const TricubicPacked& element, const Eige
       }
     }
   }
+  if (withBarrier) barrier->active = barrierArgs.active;
   const double energy = energyLanes.sum();
   if (!gradient) return energy;
 
