@@ -27,7 +27,7 @@ namespace barrier_detail {
 
 // Column m of cof(A): the cross product of the other two columns, so that A^T cof(A) = det(A) I.
 template <class V>
-void cofactorColumn(const V (&A)[3][3], int m, V (&column)[3]) {
+[[gnu::always_inline]] inline void cofactorColumn(const V (&A)[3][3], int m, V (&column)[3]) {
   const int p = (m + 1) % 3, q = (m + 2) % 3;
   for (int r = 0; r < 3; ++r) {
     const int r1 = (r + 1) % 3, r2 = (r + 2) % 3;
@@ -46,7 +46,7 @@ void cofactor(const V (&A)[3][3], V (&cof)[3][3]) {
 
 // det(A) through cof(A)'s first column.
 template <class V>
-V determinant(const V (&A)[3][3]) {
+[[gnu::always_inline]] inline V determinant(const V (&A)[3][3]) {
   V first[3];
   cofactorColumn(A, 0, first);
   return A[0][0] * first[0] + A[1][0] * first[1] + A[2][0] * first[2];
