@@ -19,11 +19,19 @@ Points applyScalarMatrix(const SparseMatrix& S, const Points& x) {
   const int* rows = S.innerIndexPtr();
   const double* values = S.valuePtr();
   parallelChunks(uint32_t(S.rows()), 256, [&](uint32_t first, uint32_t last, unsigned) {
+    auto term = [&](int k) {
+      return values[k] * Eigen::Map<const Eigen::Array4d>(padded.data() + 4 * size_t(rows[k]));
+    };
     for (uint32_t i = first; i < last; ++i) {
-      Eigen::Array4d sum = Eigen::Array4d::Zero();
-      for (int k = begin[i]; k < begin[i + 1]; ++k)
-        sum += values[k] * Eigen::Map<const Eigen::Array4d>(padded.data() + 4 * size_t(rows[k]));
-      result.row(Eigen::Index(i)) = sum.head<3>().matrix().transpose();
+      // Four partial sums: one would wait for each addition before the next could start.
+      Eigen::Array4d sum[4] = {Eigen::Array4d::Zero(), Eigen::Array4d::Zero(),
+                               Eigen::Array4d::Zero(), Eigen::Array4d::Zero()};
+      int k = begin[i];
+      for (; k + 4 <= begin[i + 1]; k += 4)
+        for (int j = 0; j < 4; ++j) sum[j] += term(k + j);
+      for (; k < begin[i + 1]; ++k) sum[0] += term(k);
+      const Eigen::Array4d total = (sum[0] + sum[1]) + (sum[2] + sum[3]);
+      result.row(Eigen::Index(i)) = total.head<3>().matrix().transpose();
     }
   });
   return result;
