@@ -13,6 +13,7 @@
 #include "fem/polar_rotation.h"
 #include "fem/tricubic_kernel.h"
 #include "sim/standard_forms.h"
+#include "sim/system_preconditioner.h"
 #include "unit_block.h"
 
 namespace {
@@ -198,16 +199,21 @@ void BM_AddToControl(benchmark::State& state) {
 }
 BENCHMARK(BM_AddToControl)->Arg(2)->Arg(3)->Unit(benchmark::kMicrosecond);
 
-// The reduced mass matrix of an 8^3 block at K = 1 (729 control points, about the default
-// bunny's 571) applied to the control points' positions, with the step's worker threads: a CG
-// iteration applies the inertia's and the damping's.
-void BM_ApplyReducedMass(benchmark::State& state) {
+// An 8^3 block at K = 1: 729 control points, about the default bunny's 571.
+const std::optional<FemModel>& block8() {
   static const std::optional<FemModel> model = [] {
     FemSetup setup;
     setup.level = 1;
     std::string error;
     return FemModel::create(bench::unitBlock(8), setup, &error);
   }();
+  return model;
+}
+
+// Its reduced mass matrix applied to the control points' positions, with the step's worker
+// threads: a CG iteration applies the inertia's and the damping's.
+void BM_ApplyReducedMass(benchmark::State& state) {
+  const std::optional<FemModel>& model = block8();
   if (!model) {
     state.SkipWithError("the 8^3 block did not build");
     return;
@@ -221,6 +227,31 @@ void BM_ApplyReducedMass(benchmark::State& state) {
   state.counters["nonzeros"] = double(mass.nonZeros());
 }
 BENCHMARK(BM_ApplyReducedMass)->Unit(benchmark::kMicrosecond);
+
+// One solve of the implicit step's preconditioner (S = M~/h^2 + K~lin at h = 1/60, every
+// coordinate free) on the same block, with the step's worker threads: a CG iteration makes one.
+void BM_PreconditionerSolve(benchmark::State& state) {
+  const std::optional<FemModel>& model = block8();
+  if (!model) {
+    state.SkipWithError("the 8^3 block did not build");
+    return;
+  }
+  std::vector<int> dofs(size_t(3 * model->numControlPoints()));
+  for (size_t k = 0; k < dofs.size(); ++k) dofs[k] = int(k);
+  SystemPreconditioner preconditioner;
+  if (!preconditioner.update(*model, 3600, 0, 1, dofs)) {
+    state.SkipWithError("the preconditioner did not factor");
+    return;
+  }
+  const Eigen::VectorXd r = Eigen::VectorXd::LinSpaced(Eigen::Index(dofs.size()), -1.0, 1.0);
+  Eigen::VectorXd z;
+  for (auto _ : state) {
+    preconditioner.apply(r, z);
+    benchmark::DoNotOptimize(z.data());
+  }
+  state.counters["factor_nonzeros"] = double(preconditioner.stats().factorNonZeros);
+}
+BENCHMARK(BM_PreconditionerSolve)->Unit(benchmark::kMicrosecond);
 
 // Warm-started polar rotations of 1,024 slightly rotated stretches: one at a time against four
 // in the lanes of a vector.
