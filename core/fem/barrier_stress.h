@@ -12,10 +12,11 @@
 namespace sculpt {
 
 /// What a kernel call needs of the barrier. Gradient mode: when `record` is non-null the kernel
-/// writes A at every Gauss point there (with or without `settings`: the Jacobian report uses it) (9 values per point, lanes fastest, in the kernel's
-/// Gauss-point blocks) and sets `active` when some point lies below the threshold. Hessian mode:
-/// `state` is what a gradient call recorded for this element; null means no point of it was below
-/// the threshold, so the barrier adds nothing to its Hessian.
+/// writes A at every Gauss point there (with or without `settings`: the Jacobian report uses it) (9
+/// values per point, lanes fastest, in the kernel's Gauss-point blocks) and sets `active` when some
+/// point lies below the threshold. Hessian mode: `state` is what a gradient call recorded for this
+/// element; null means no point of it was below the threshold, so the barrier adds nothing to its
+/// Hessian.
 struct BarrierArgs {
   const InversionBarrier* settings = nullptr;  ///< null: the corotated model, no barrier
   double* record = nullptr;
@@ -51,6 +52,12 @@ template <class V>
   cofactorColumn(A, 0, first);
   return A[0][0] * first[0] + A[1][0] * first[1] + A[2][0] * first[2];
 }
+
+// A 3x3 group of lanes as one object, to pass copies out of line.
+template <class V>
+struct Lanes {
+  V v[3][3];
+};
 
 }  // namespace barrier_detail
 
@@ -96,8 +103,8 @@ template <class V>
     const int p = (m + 1) % 3, q = (m + 2) % 3;
     for (int r = 0; r < 3; ++r) {
       const int r1 = (r + 1) % 3, r2 = (r + 2) % 3;
-      const V change = dA[r1][p] * A[r2][q] - dA[r2][p] * A[r1][q] + A[r1][p] * dA[r2][q] -
-                       A[r2][p] * dA[r1][q];
+      const V change =
+          dA[r1][p] * A[r2][q] - dA[r2][p] * A[r1][q] + A[r1][p] * dA[r2][q] - A[r2][p] * dA[r1][q];
       S[r][m] += slope * change;
     }
   }
@@ -124,15 +131,29 @@ template <class V>
         Eigen::Map<V>(b.record + (block * 9 + size_t(rc)) * kLanes) = A[rc / 3][rc % 3];
     if (!b.settings) return V::Zero();
     if (!(barrier_detail::determinant(A) < b.settings->threshold).any()) return V::Zero();
-    const V bulk = volumeLambda + (2.0 / 3.0) * volumeMu;
-    return addBarrierStress(A, bulk, *b.settings, S, b.active);
+  } else if (!b.state || !b.settings) {
+    return V::Zero();
   }
-  if (!b.state || !b.settings) return V::Zero();
-  for (int rc = 0; rc < 9; ++rc)
-    A[rc / 3][rc % 3] = Eigen::Map<const V>(b.state + (block * 9 + size_t(rc)) * kLanes);
+  // Out of line on copies: the kernel's own S and M, whose addresses never leave it, can then
+  // stay in registers on the usual path.
+  barrier_detail::Lanes<V> a, m, s;
+  for (int r = 0; r < 3; ++r)
+    for (int c = 0; c < 3; ++c) {
+      a.v[r][c] = gradientMode
+                      ? A[r][c]
+                      : V(Eigen::Map<const V>(b.state + (block * 9 + size_t(r * 3 + c)) * kLanes));
+      m.v[r][c] = M[r][c];
+      s.v[r][c] = S[r][c];
+    }
   const V bulk = volumeLambda + (2.0 / 3.0) * volumeMu;
-  addBarrierHessian(A, M, bulk, *b.settings, S);
-  return V::Zero();
+  V psi = V::Zero();
+  if (gradientMode)
+    psi = addBarrierStress(a.v, bulk, *b.settings, s.v, b.active);
+  else
+    addBarrierHessian(a.v, m.v, bulk, *b.settings, s.v);
+  for (int r = 0; r < 3; ++r)
+    for (int c = 0; c < 3; ++c) S[r][c] = s.v[r][c];
+  return psi;
 }
 
 }  // namespace sculpt

@@ -3,6 +3,7 @@
 #include <Eigen/Core>
 #include <cmath>
 
+#include "fem/kernel_target.h"
 #include "fem/quadrature.h"
 #include "subdiv/tricubic_patch.h"
 
@@ -92,7 +93,7 @@ namespace {
 // nonzero per column (element.axisRows): M = G Jinv and H = S Jinv^T are then one product per
 // entry instead of three.
 template <bool kAxisAligned>
-double tricubicKernel(const double* u, const TricubicPacked& element, const Eigen::Matrix3d& R,
+SCULPT_KERNEL_TARGET double tricubicKernel(const double* u, const TricubicPacked& element, const Eigen::Matrix3d& R,
                       bool withRestTerm, bool withEnergy, double* gradient, BarrierArgs* barrier) {
   const Tables& T = tables();
   // Every stage below works on whole V4 rows (four consecutive values of the fastest index):
