@@ -304,14 +304,19 @@ void ScenePhysics::updateState() {
   surfaceMap_->cellNodesFromDisplacement(displacement, nodes_);
   applyNodeGradientStencil(geometry_->gradientStencil(kDefaultGradientScheme), nodes_, gradients_);
   picker_.reset();
-  // The rotations of this state (the next step's warm start, and the strain energy's frames).
-  model_->elastic().updateRotations(femNodes_);
   strainEnergyStale_ = true;
   if (strainEnergyWanted_) findStrainEnergy();
 }
 
 void ScenePhysics::findStrainEnergy() const {
-  model_->elastic().elementEnergies(femNodes_, elementEnergy_);
+  // In this state's frames, found for the query alone: they must not become the next step's
+  // warm start, or the motion would depend on whether the field is shown. (The step finds its
+  // own rotations at its predicted state; a pass over every element here cost 3-5% of a step.)
+  ElasticKernel& kernel = model_->elastic();
+  const std::vector<Eigen::Matrix3d> warmStart = kernel.rotations();
+  kernel.updateRotations(femNodes_);
+  kernel.elementEnergies(femNodes_, elementEnergy_);
+  kernel.setRotations(warmStart);
   elementEnergyDensity_.resize(elementEnergy_.size());
   for (size_t e = 0; e < elementEnergy_.size(); ++e)
     elementEnergyDensity_[e] = elementEnergy_[e] / elementVolume_[e];
