@@ -93,8 +93,10 @@ namespace {
 // nonzero per column (element.axisRows): M = G Jinv and H = S Jinv^T are then one product per
 // entry instead of three.
 template <bool kAxisAligned>
-SCULPT_KERNEL_TARGET double tricubicKernel(const double* u, const TricubicPacked& element, const Eigen::Matrix3d& R,
-                      bool withRestTerm, bool withEnergy, double* gradient, BarrierArgs* barrier) {
+SCULPT_KERNEL_TARGET double tricubicKernel(const double* u, const TricubicPacked& element,
+                                           const Eigen::Matrix3d& R, bool withRestTerm,
+                                           bool withEnergy, double* gradient,
+                                           BarrierArgs* barrier) {
   const Tables& T = tables();
   // Every stage below works on whole V4 rows (four consecutive values of the fastest index):
   // written out explicitly, since GCC otherwise unrolls the small loops into scalar code.
