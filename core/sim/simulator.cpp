@@ -196,10 +196,7 @@ Points Simulator::hessianProduct(const Points& dx, bool withInertia) {
     r.control += loadFactor_ * l.control;
     r.nodes += loadFactor_ * l.nodes;
   }
-  if (withInertia) {
-    inertia_->addHessianProduct(state, direction, r);
-    damping_->addHessianProduct(state, direction, r);
-  }
+  if (withInertia) r.control += applyScalarMatrix(inertiaDamping_, dx);
   model_.addToControl(r.nodes, r.control);
   zeroFixed(r.control);
   return r.control;
@@ -316,6 +313,11 @@ Simulator::Attempt Simulator::implicitSubstep(double h) {
   preconditioner_->prepareFirstFactor(model_, freeDofs_);
   inertia_ = std::make_unique<InertiaForm>(model_, h);
   damping_ = std::make_unique<DampingForm>(model_, h);
+  if (inertiaDampingStep_ != h || inertiaDampingVersion_ != model_.massVersion()) {
+    inertiaDamping_ = (1.0 / (h * h)) * model_.reducedMass() + (1.0 / h) * model_.reducedDamping();
+    inertiaDampingStep_ = h;
+    inertiaDampingVersion_ = model_.massVersion();
+  }
   const Points start = position_;
   Points predicted = position_ + h * velocity_;
   for (size_t i = 0; i < fixed_.size(); ++i)
