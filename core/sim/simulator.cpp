@@ -314,7 +314,8 @@ Simulator::Attempt Simulator::implicitSubstep(double h) {
   inertia_ = std::make_unique<InertiaForm>(model_, h);
   damping_ = std::make_unique<DampingForm>(model_, h);
   if (inertiaDampingStep_ != h || inertiaDampingVersion_ != model_.massVersion()) {
-    inertiaDamping_ = (1.0 / (h * h)) * model_.reducedMass() + (1.0 / h) * model_.reducedDamping();
+    inertiaDamping_ =
+        inertia_->scale() * inertia_->matrix() + damping_->scale() * damping_->matrix();
     inertiaDampingStep_ = h;
     inertiaDampingVersion_ = model_.massVersion();
   }

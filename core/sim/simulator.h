@@ -171,14 +171,14 @@ class Simulator {
   // 2M~ + h D~ of the paper's scheme on the free coordinates (in freeDofs_ order), for
   // paperMatrixStep_, the mass matrix version and the free set it was built for.
   SparseMatrix paperMatrix_;
-  // (1/h^2) M~ + (1/h) D~, the inertia's and the damping's Hessians as one matrix (a CG
-  // iteration then streams one matrix, not two), for inertiaDampingStep_ and the mass version.
-  SparseMatrix inertiaDamping_;
-  double inertiaDampingStep_ = 0;
-  uint64_t inertiaDampingVersion_ = ~uint64_t(0);
   Eigen::VectorXd paperDiagonal_;
   double paperMatrixStep_ = 0;
   uint64_t paperMatrixVersion_ = ~uint64_t(0), paperMatrixFreeVersion_ = ~uint64_t(0);
+  // The inertia's and the damping's Hessians as one matrix (a CG iteration then streams one
+  // matrix, not two), for inertiaDampingStep_ and the mass version.
+  SparseMatrix inertiaDamping_;
+  double inertiaDampingStep_ = 0;
+  uint64_t inertiaDampingVersion_ = ~uint64_t(0);
 };
 
 }  // namespace sculpt

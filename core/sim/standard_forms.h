@@ -33,9 +33,11 @@ class QuadraticControlForm : public Form {
   double energy(const FormState& x) const override;
   void addGradient(const FormState& x, FormGradient& g) const override;
   void addHessianProduct(const FormState& x, const FormState& dx, FormGradient& r) const override;
+  /// The Hessian is scale() * matrix() on each coordinate.
+  const SparseMatrix& matrix() const;
+  double scale() const { return scale_; }
 
  private:
-  const SparseMatrix& matrix() const;
   const FemModel& model_;
   MassField field_;
   double scale_;
