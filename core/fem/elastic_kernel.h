@@ -35,8 +35,21 @@ class ElasticKernel {
   /// R_e = I for every element: plain small-strain linear elasticity.
   void resetRotations();
   const std::vector<Eigen::Matrix3d>& rotations() const { return rotations_; }
-  /// Puts back rotations taken with rotations() (the warm start of the next update).
-  void setRotations(const std::vector<Eigen::Matrix3d>& rotations) { rotations_ = rotations; }
+
+  /// While alive, keeps the kernel's rotations (the next update's warm start): they are put back
+  /// when it ends. For queries that find a state's own rotations (an energy asked for, a field
+  /// shown): otherwise asking would change the last bits of every later step.
+  class WarmStartKept {
+   public:
+    explicit WarmStartKept(ElasticKernel& kernel) : kernel_(kernel), kept_(kernel.rotations_) {}
+    ~WarmStartKept() { kernel_.rotations_ = std::move(kept_); }
+    WarmStartKept(const WarmStartKept&) = delete;
+    WarmStartKept& operator=(const WarmStartKept&) = delete;
+
+   private:
+    ElasticKernel& kernel_;
+    std::vector<Eigen::Matrix3d> kept_;
+  };
 
   /// E(nodes) with the current rotations.
   double energy(const Points& nodes) const;

@@ -309,14 +309,13 @@ void ScenePhysics::updateState() {
 }
 
 void ScenePhysics::findStrainEnergy() const {
-  // In this state's frames, found for the query alone: they must not become the next step's
-  // warm start, or the motion would depend on whether the field is shown. (The step finds its
-  // own rotations at its predicted state; a pass over every element here cost 3-5% of a step.)
+  // In this state's frames, found for the query alone, so that the motion does not depend on
+  // whether the field is shown. (The step finds its own rotations at its predicted state; a
+  // pass over every element after each step cost 3-5% of one.)
   ElasticKernel& kernel = model_->elastic();
-  const std::vector<Eigen::Matrix3d> warmStart = kernel.rotations();
+  const ElasticKernel::WarmStartKept kept(kernel);
   kernel.updateRotations(femNodes_);
   kernel.elementEnergies(femNodes_, elementEnergy_);
-  kernel.setRotations(warmStart);
   elementEnergyDensity_.resize(elementEnergy_.size());
   for (size_t e = 0; e < elementEnergy_.size(); ++e)
     elementEnergyDensity_[e] = elementEnergy_[e] / elementVolume_[e];

@@ -239,17 +239,13 @@ double Simulator::kineticEnergy() const {
 }
 
 double Simulator::elasticEnergy() {
-  // A query: the rotations it finds must not become the next step's warm start. Otherwise
-  // asking (a progress line about once a second of wall time) changes the last bits of every
-  // later step, and the same run gives different results depending on how fast it ran.
-  ElasticKernel& kernel = model_.elastic();
-  const std::vector<Eigen::Matrix3d> warmStart = kernel.rotations();
+  // A query (a progress line about once a second of wall time): without the warm start kept,
+  // the same run would give different results depending on how fast it ran.
+  const ElasticKernel::WarmStartKept kept(model_.elastic());
   refreshNodes(position_);
   const FormState state{position_, scratchNodes_};
   elastic_->prepare(state);
-  const double energy = elastic_->energy(state);
-  kernel.setRotations(warmStart);
-  return energy;
+  return elastic_->energy(state);
 }
 
 double Simulator::loadEnergy() {
