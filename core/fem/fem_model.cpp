@@ -77,7 +77,7 @@ void FemModel::addToControl(const Points& nodeVectors, Points& control) const {
 
 void FemModel::refreshMatrices() const {
   if (!matricesStale_) return;
-  reducedMass_ = reduceToControlPoints(A_, assembleNodeMatrix(*mesh_, MassField::Density));
+  reducedMass_ = reducedNodeMatrix(*mesh_, A_, MassField::Density);
   // Damping proportional to density everywhere (any uniform material) gives D~ = ratio M~ (to
   // rounding): no second assembly and reduction, a third of the first step's set-up.
   const std::vector<Material>& samples = mesh_->gaussMaterial;
@@ -92,7 +92,7 @@ void FemModel::refreshMatrices() const {
     reducedDamping_ = ratio * reducedMass_;
     reducedDamping_.prune(0.0);  // zero damping: an empty matrix, as the assembly gives
   } else {
-    reducedDamping_ = reduceToControlPoints(A_, assembleNodeMatrix(*mesh_, MassField::Damping));
+    reducedDamping_ = reducedNodeMatrix(*mesh_, A_, MassField::Damping);
   }
   matricesStale_ = false;
 }

@@ -4,21 +4,25 @@
 #include <algorithm>
 #include <cstdint>
 #include <span>
+#include <utility>
 #include <vector>
 
 #include "fem/quadrature.h"
 #include "fem/trilinear_shape.h"
 #include "subdiv/tricubic_patch.h"
+#include "util/dense_accumulator.h"
+#include "util/parallel_for.h"
 
 namespace sculpt {
 namespace {
 
-// The tricubic element matrix sum_q w_q N_a(q) N_b(q) by sum factorisation: with nodes and
-// Gauss points both 4x4x4 tensor grids, N_(a1 a2 a3)(q1 q2 q3) = B_a1(q1) B_a2(q2) B_a3(q3), so the
-// sum is taken one axis at a time (about 21 k multiply-adds instead of 64^3 = 262 k).
-class TricubicMassKernel {
+// Columns of the tricubic element matrix sum_q w_q N_a(q) N_b(q) by sum factorisation: with
+// nodes and Gauss points both 4x4x4 tensor grids, N_(a1 a2 a3)(q1 q2 q3) = B_a1(q1) B_a2(q2)
+// B_a3(q3), so the sum is taken one axis at a time, four rows a3 at once (192 four-wide
+// multiply-adds per column instead of 64 x 64).
+class TricubicMassColumns {
  public:
-  TricubicMassKernel() {
+  TricubicMassColumns() {
     const QuadratureRule rule = gaussLegendre(4);
     for (int q = 0; q < 4; ++q) {
       double B[4];
@@ -26,43 +30,40 @@ class TricubicMassKernel {
       for (int a = 0; a < 4; ++a)
         for (int b = 0; b < 4; ++b) pair_[a * 4 + b][q] = B[a] * B[b];
     }
+    for (int b = 0; b < 4; ++b)
+      for (int q = 0; q < 4; ++q)
+        pairRows_[b][q] = V4(pair_[b][q], pair_[4 + b][q], pair_[8 + b][q], pair_[12 + b][q]);
   }
 
-  // Me(a, b) for node ids a = a1*16 + a2*4 + a3 from weights w[q1*16 + q2*4 + q3].
-  void elementMatrix(const double* w, Eigen::MatrixXd& Me) const {
-    double t1[16][4][4];  // [a1 b1][q2][q3]
-    for (int p = 0; p < 16; ++p)
-      for (int q2 = 0; q2 < 4; ++q2)
-        for (int q3 = 0; q3 < 4; ++q3) {
-          double sum = 0;
-          for (int q1 = 0; q1 < 4; ++q1) sum += w[q1 * 16 + q2 * 4 + q3] * pair_[p][q1];
-          t1[p][q2][q3] = sum;
-        }
-    double t2[16][16][4];  // [a1 b1][a2 b2][q3]
-    for (int p = 0; p < 16; ++p)
-      for (int r = 0; r < 16; ++r)
-        for (int q3 = 0; q3 < 4; ++q3) {
-          double sum = 0;
-          for (int q2 = 0; q2 < 4; ++q2) sum += t1[p][q2][q3] * pair_[r][q2];
-          t2[p][r][q3] = sum;
-        }
-    Me.resize(kTricubicNodes, kTricubicNodes);
-    for (int a1 = 0; a1 < 4; ++a1)
-      for (int b1 = 0; b1 < 4; ++b1)
-        for (int a2 = 0; a2 < 4; ++a2)
-          for (int b2 = 0; b2 < 4; ++b2) {
-            const double* t = t2[a1 * 4 + b1][a2 * 4 + b2];
-            for (int a3 = 0; a3 < 4; ++a3)
-              for (int b3 = 0; b3 < 4; ++b3) {
-                const double* p3 = pair_[a3 * 4 + b3];
-                Me(a1 * 16 + a2 * 4 + a3, b1 * 16 + b2 * 4 + b3) =
-                    t[0] * p3[0] + t[1] * p3[1] + t[2] * p3[2] + t[3] * p3[3];
-              }
-          }
+  // Column b = b1*16 + b2*4 + b3 of the element matrix, Me(a, b) for a = a1*16 + a2*4 + a3, from
+  // the weights w[q1*16 + q2*4 + q3].
+  void column(const double* w, int b, double* out) const {
+    const int b1 = b / 16, b2 = (b / 4) % 4, b3 = b % 4;
+    V4 t1[4][4];  // [q1][q2], lanes a3
+    for (int q1 = 0; q1 < 4; ++q1)
+      for (int q2 = 0; q2 < 4; ++q2) {
+        const double* wq = w + q1 * 16 + q2 * 4;
+        t1[q1][q2] = wq[0] * pairRows_[b3][0] + wq[1] * pairRows_[b3][1] +
+                     wq[2] * pairRows_[b3][2] + wq[3] * pairRows_[b3][3];
+      }
+    V4 t2[4][4];  // [q1][a2]
+    for (int q1 = 0; q1 < 4; ++q1)
+      for (int a2 = 0; a2 < 4; ++a2) {
+        const double* p = pair_[a2 * 4 + b2];
+        t2[q1][a2] = p[0] * t1[q1][0] + p[1] * t1[q1][1] + p[2] * t1[q1][2] + p[3] * t1[q1][3];
+      }
+    for (int a1 = 0; a1 < 4; ++a1) {
+      const double* p = pair_[a1 * 4 + b1];
+      for (int a2 = 0; a2 < 4; ++a2)
+        Eigen::Map<V4>(out + a1 * 16 + a2 * 4) =
+            p[0] * t2[0][a2] + p[1] * t2[1][a2] + p[2] * t2[2][a2] + p[3] * t2[3][a2];
+    }
   }
 
  private:
-  double pair_[16][4];  // [a b][q]: B_a(q) B_b(q) of one axis
+  using V4 = Eigen::Array4d;
+  double pair_[16][4];   // [a b][q]: B_a(q) B_b(q) of one axis
+  V4 pairRows_[4][4];    // [b][q]: pair_[a*4 + b][q] for a = 0..3
 };
 
 // Shape function values at the Gauss points of a linear element kind: N(q, a).
@@ -80,106 +81,140 @@ Eigen::MatrixXd linearShapeTable(bool pyramid) {
   return N;
 }
 
-}  // namespace
+// A sparse matrix column by column, each column's rows in no particular order.
+struct Columns {
+  std::vector<int64_t> begin{0};
+  std::vector<int> rows;
+  std::vector<double> values;
+};
 
-SparseMatrix assembleNodeMatrix(const FemMesh& mesh, MassField field) {
-  const TricubicMassKernel tricubic;
+using Accumulator = DenseAccumulator<double>;
+
+// Appends the accumulated column to `out` (rows sorted when asked, exact zeros kept when asked).
+void flush(Accumulator& column, Columns& out, bool sorted, bool keepZeros) {
+  if (sorted) column.sortTouched();
+  column.drain([&](uint32_t row, double value) {
+    if (value == 0.0 && !keepZeros) return;
+    out.rows.push_back(int(row));
+    out.values.push_back(value);
+  });
+  out.begin.push_back(int64_t(out.rows.size()));
+}
+
+// Columns [0, n) computed in parallel chunks by column(j, accumulator), flushed in order.
+template <class ColumnBody>
+Columns columnsInParallel(uint32_t n, size_t rows, bool sorted, bool keepZeros,
+                          const ColumnBody& column) {
+  std::vector<Columns> parts(workerCount());
+  parallelChunks(n, 64, [&](uint32_t begin, uint32_t end, unsigned worker) {
+    Accumulator accumulator(rows, 0.0);
+    Columns& part = parts[worker];
+    for (uint32_t j = begin; j < end; ++j) {
+      column(j, accumulator, worker);
+      flush(accumulator, part, sorted, keepZeros);
+    }
+  });
+  Columns all;
+  for (const Columns& part : parts) {
+    const int64_t offset = int64_t(all.rows.size());
+    for (size_t k = 1; k < part.begin.size(); ++k) all.begin.push_back(offset + part.begin[k]);
+    all.rows.insert(all.rows.end(), part.rows.begin(), part.rows.end());
+    all.values.insert(all.values.end(), part.values.begin(), part.values.end());
+  }
+  return all;
+}
+
+// The node matrix of `field`, each node's column gathered from the elements around the node:
+// a dense accumulator per column instead of a search for every element entry in the pattern.
+Columns nodeMatrixColumns(const FemMesh& mesh, MassField field, bool sorted) {
+  const TricubicMassColumns tricubic;
   const Eigen::MatrixXd hexN = linearShapeTable(false);
   const Eigen::MatrixXd pyramidN = linearShapeTable(true);
-  const uint32_t numElements = mesh.numElements();
+  const uint32_t numElements = mesh.numElements(), numNodes = mesh.numNodes();
   const auto elementNodes = [&](uint32_t e) -> std::span<const uint32_t> {
     if (e < mesh.numTricubic()) return mesh.tricubicNodes[e];
     return mesh.linearNodes[e - mesh.numTricubic()];
   };
-
-  // The sparsity pattern first (node j couples with every node of every element around it), so
-  // that element matrices are added in place: triplets would hold 4096 entries per tricubic
-  // element (hundreds of MB for a few thousand elements) only to be sorted and summed.
-  std::vector<uint32_t> elementsBegin(mesh.numNodes() + 1, 0), elementsOfNode;
+  // The field times the Gauss volume; an element where it vanishes adds nothing.
+  std::vector<double> weights(mesh.numGaussPoints());
+  std::vector<uint8_t> empty(numElements, 1);
   for (uint32_t e = 0; e < numElements; ++e)
-    for (uint32_t j : elementNodes(e)) ++elementsBegin[j + 1];
-  for (uint32_t j = 0; j < mesh.numNodes(); ++j) elementsBegin[j + 1] += elementsBegin[j];
-  elementsOfNode.resize(elementsBegin.back());
+    for (uint32_t q = mesh.gaussBegin(e); q < mesh.gaussBegin(e) + mesh.gaussCount(e); ++q) {
+      const Material& m = mesh.gaussMaterial[q];
+      weights[q] = (field == MassField::Density ? m.density : m.damping) * mesh.gaussVolume[q];
+      if (weights[q] != 0.0) empty[e] = 0;
+    }
+  // Each node's (element, local node) slots. A node repeated in an element (a pyramid's apex)
+  // has a slot for each of its places there, and the element's columns for both add up.
+  std::vector<uint32_t> slotsBegin(numNodes + 1, 0);
+  for (uint32_t e = 0; e < numElements; ++e)
+    for (uint32_t j : elementNodes(e)) ++slotsBegin[j + 1];
+  for (uint32_t j = 0; j < numNodes; ++j) slotsBegin[j + 1] += slotsBegin[j];
+  std::vector<std::pair<uint32_t, uint32_t>> slots(slotsBegin.back());
   {
-    std::vector<uint32_t> cursor(elementsBegin.begin(), elementsBegin.end() - 1);
-    for (uint32_t e = 0; e < numElements; ++e)
-      for (uint32_t j : elementNodes(e)) elementsOfNode[cursor[j]++] = e;
+    std::vector<uint32_t> cursor(slotsBegin.begin(), slotsBegin.end() - 1);
+    for (uint32_t e = 0; e < numElements; ++e) {
+      const std::span<const uint32_t> ids = elementNodes(e);
+      for (uint32_t b = 0; b < ids.size(); ++b) slots[cursor[ids[b]]++] = {e, b};
+    }
   }
-  SparseMatrix M(mesh.numNodes(), mesh.numNodes());
-  {
-    // Column j: the distinct nodes of the elements around j (a marker array dedupes them, so only
-    // the few hundred distinct rows of each column are sorted), written straight into the
-    // compressed arrays (inserting entry by entry took as long as the element matrices).
-    std::vector<uint32_t> marker(mesh.numNodes(), UINT32_MAX);
-    std::vector<int> outerIndex(size_t(mesh.numNodes()) + 1, 0), innerIndex;
-    for (uint32_t j = 0; j < mesh.numNodes(); ++j) {
-      const size_t first = innerIndex.size();
-      for (uint32_t k = elementsBegin[j]; k < elementsBegin[j + 1]; ++k)
-        for (uint32_t i : elementNodes(elementsOfNode[k]))
-          if (marker[i] != j) {
-            marker[i] = j;
-            innerIndex.push_back(static_cast<int>(i));
-          }
-      std::sort(innerIndex.begin() + std::ptrdiff_t(first), innerIndex.end());
-      outerIndex[j + 1] = static_cast<int>(innerIndex.size());
-    }
-    M.resizeNonZeros(static_cast<Eigen::Index>(innerIndex.size()));
-    std::copy(outerIndex.begin(), outerIndex.end(), M.outerIndexPtr());
-    std::copy(innerIndex.begin(), innerIndex.end(), M.innerIndexPtr());
-    std::fill(M.valuePtr(), M.valuePtr() + innerIndex.size(), 0.0);
-  }
-  const int* outer = M.outerIndexPtr();
-  const int* inner = M.innerIndexPtr();
-  double* values = M.valuePtr();
-  // Where each column's diagonal entry is: the element matrices go into the lower triangle only
-  // (half the walk along each column), and the upper one is its mirror image.
-  std::vector<int> diagonal(mesh.numNodes());
-  for (uint32_t j = 0; j < mesh.numNodes(); ++j)
-    diagonal[j] = int(std::lower_bound(inner + outer[j], inner + outer[j + 1], int(j)) - inner);
-
-  // Element matrices N^T diag(field * V) N, added in place (repeated nodes of pyramid apices
-  // add up like any shared node).
-  Eigen::VectorXd weights;
-  Eigen::MatrixXd Me;
-  std::vector<uint32_t> order;
-  for (uint32_t e = 0; e < numElements; ++e) {
-    const uint32_t g0 = mesh.gaussBegin(e), count = mesh.gaussCount(e);
-    weights.resize(count);
-    for (uint32_t q = 0; q < count; ++q) {
-      const Material& m = mesh.gaussMaterial[g0 + q];
-      weights[q] = (field == MassField::Density ? m.density : m.damping) * mesh.gaussVolume[g0 + q];
-    }
-    if (weights.isZero(0.0)) continue;
-    if (e < mesh.numTricubic()) {
-      tricubic.elementMatrix(weights.data(), Me);
-    } else {
-      const Eigen::MatrixXd& N = mesh.elementType[e] == ElementType::Pyramid ? pyramidN : hexN;
-      Me.noalias() = N.transpose() * weights.asDiagonal() * N;
-    }
-    // The element's nodes in increasing id order, so that each column's entries are found by
-    // one merge-like walk down the column from its diagonal instead of a search per entry.
-    const std::span<const uint32_t> ids = elementNodes(e);
-    order.resize(ids.size());
-    for (size_t a = 0; a < ids.size(); ++a) order[a] = static_cast<uint32_t>(a);
-    std::sort(order.begin(), order.end(), [&](uint32_t x, uint32_t y) { return ids[x] < ids[y]; });
-    for (size_t ob = 0; ob < order.size(); ++ob) {
-      const uint32_t b = order[ob];
-      const int* at = inner + diagonal[ids[b]];
-      for (size_t oa = ob; oa < order.size(); ++oa) {
-        const uint32_t a = order[oa];
-        while (*at < static_cast<int>(ids[a])) ++at;  // the pattern holds every element node
-        // A node repeated in the element (a pyramid's apex) meets itself twice in the full
-        // matrix, (a, b) and (b, a), on the diagonal.
-        values[at - inner] += oa > ob && ids[a] == ids[b] ? 2.0 * Me(a, b) : Me(a, b);
+  return columnsInParallel(numNodes, numNodes, sorted, true, [&](uint32_t j, Accumulator& acc, unsigned) {
+    alignas(32) double column[kTricubicNodes];
+    for (uint32_t s = slotsBegin[j]; s < slotsBegin[j + 1]; ++s) {
+      const auto [e, b] = slots[s];
+      if (empty[e]) continue;
+      const double* w = weights.data() + mesh.gaussBegin(e);
+      const std::span<const uint32_t> ids = elementNodes(e);
+      if (e < mesh.numTricubic()) {
+        tricubic.column(w, int(b), column);
+      } else {
+        const Eigen::MatrixXd& N = mesh.elementType[e] == ElementType::Pyramid ? pyramidN : hexN;
+        for (int a = 0; a < kLinearNodes; ++a) {
+          column[a] = 0.0;
+          for (int q = 0; q < kLinearGaussPoints; ++q) column[a] += N(q, a) * w[q] * N(q, b);
+        }
       }
+      for (size_t a = 0; a < ids.size(); ++a) acc.add(ids[a], column[a]);
     }
-  }
-  // The upper triangle: column i's rows above its diagonal are, in order, the columns j < i
-  // whose lower part holds row i.
-  std::vector<int> upper(outer, outer + mesh.numNodes());
-  for (uint32_t j = 0; j < mesh.numNodes(); ++j)
-    for (int k = diagonal[j] + 1; k < outer[j + 1]; ++k) values[upper[size_t(inner[k])]++] = values[k];
-  return M;
+  });
+}
+
+SparseMatrix toSparse(const Columns& columns, Eigen::Index rows) {
+  const Eigen::Index cols = Eigen::Index(columns.begin.size()) - 1;
+  SparseMatrix matrix(rows, cols);
+  matrix.resizeNonZeros(Eigen::Index(columns.rows.size()));
+  for (Eigen::Index j = 0; j <= cols; ++j) matrix.outerIndexPtr()[j] = int(columns.begin[size_t(j)]);
+  std::copy(columns.rows.begin(), columns.rows.end(), matrix.innerIndexPtr());
+  std::copy(columns.values.begin(), columns.values.end(), matrix.valuePtr());
+  return matrix;
+}
+
+}  // namespace
+
+SparseMatrix assembleNodeMatrix(const FemMesh& mesh, MassField field) {
+  return toSparse(nodeMatrixColumns(mesh, field, true), mesh.numNodes());
+}
+
+SparseMatrix reducedNodeMatrix(const FemMesh& mesh, const SparseMatrix& A, MassField field) {
+  // Column c of A^T M A is A^T (M a_c), a_c column c of A: M's columns for the nodes of a_c
+  // summed into one dense accumulator over the nodes, then those nodes' rows of A into one over
+  // the control points. M's columns need no order.
+  const Columns M = nodeMatrixColumns(mesh, field, false);
+  const SparseMatrix At = A.transpose();  // column n: the control points of node n's row of A
+  const uint32_t numControl = uint32_t(A.cols());
+  std::vector<Accumulator> nodeSums(workerCount(), Accumulator(size_t(A.rows()), 0.0));
+  const Columns reduced = columnsInParallel(
+      numControl, numControl, true, false, [&](uint32_t c, Accumulator& sum, unsigned worker) {
+        Accumulator& nodes = nodeSums[worker];
+        for (SparseMatrix::InnerIterator a(A, Eigen::Index(c)); a; ++a)
+          for (int64_t k = M.begin[size_t(a.row())]; k < M.begin[size_t(a.row()) + 1]; ++k)
+            nodes.add(uint32_t(M.rows[size_t(k)]), a.value() * M.values[size_t(k)]);
+        nodes.drain([&](uint32_t node, double value) {
+          for (SparseMatrix::InnerIterator r(At, Eigen::Index(node)); r; ++r)
+            sum.add(uint32_t(r.row()), r.value() * value);
+        });
+      });
+  return toSparse(reduced, A.cols());
 }
 
 SparseMatrix stencilMatrix(const StencilTable& stencils) {
@@ -191,13 +226,6 @@ SparseMatrix stencilMatrix(const StencilTable& stencils) {
   SparseMatrix A(stencils.numRows(), stencils.numColumns());
   A.setFromTriplets(triplets.begin(), triplets.end());
   return A;
-}
-
-SparseMatrix reduceToControlPoints(const SparseMatrix& A, const SparseMatrix& nodeMatrix) {
-  SparseMatrix MA = nodeMatrix * A;
-  SparseMatrix reduced = SparseMatrix(A.transpose()) * MA;
-  reduced.prune(0.0);
-  return reduced;
 }
 
 }  // namespace sculpt

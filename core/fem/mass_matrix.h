@@ -19,7 +19,7 @@ SparseMatrix assembleNodeMatrix(const FemMesh& mesh, MassField field);
 /// A as a sparse matrix (#rows by #columns of the stencil table).
 SparseMatrix stencilMatrix(const StencilTable& stencils);
 
-/// A^T M A.
-SparseMatrix reduceToControlPoints(const SparseMatrix& A, const SparseMatrix& nodeMatrix);
+/// A^T M A for the node matrix M of `field` (assembleNodeMatrix), with A the stencil matrix.
+SparseMatrix reducedNodeMatrix(const FemMesh& mesh, const SparseMatrix& A, MassField field);
 
 }  // namespace sculpt

@@ -5,6 +5,7 @@
 #include <gtest/gtest.h>
 
 #include <Eigen/Eigenvalues>
+#include <algorithm>
 #include <Eigen/SparseCholesky>
 #include <cmath>
 #include <cstdio>
@@ -271,6 +272,36 @@ TEST(MassMatrix, DampingMatrixIsDampingOverDensityTimesMass) {
   auto undamped = makeModel(mixedMesh(), 1, false);
   ASSERT_TRUE(undamped);
   EXPECT_EQ(undamped->reducedDamping().nonZeros(), 0);
+}
+
+TEST(MassMatrix, ReducedMatrixIsTheSparseProductOfTheStencilsAndTheNodeMatrix) {
+  // reducedNodeMatrix builds A^T M A column by column without forming M A; Eigen's sparse
+  // products give it independently. A painted ball makes density and damping vary between Gauss
+  // points (and damping no longer proportional to density), on tricubic, trilinear and pyramid
+  // elements.
+  auto model = makeModel(jittered(mixedMesh(), 0.05, 8), 2, false);
+  ASSERT_TRUE(model);
+  Material painted;
+  painted.density = 7000;
+  painted.damping = 40;
+  const Eigen::Vector3d centre = model->restControl().colwise().mean().transpose();
+  ASSERT_GT(model->paintMaterial(centre, 0.6, painted), 0);
+  const FemMesh& mesh = model->mesh();
+  ASSERT_GT(mesh.numTricubic(), 0u);
+  ASSERT_GT(std::count(mesh.elementType.begin(), mesh.elementType.end(), ElementType::Pyramid), 0);
+  const SparseMatrix& A = model->stencilMatrix();
+  for (MassField field : {MassField::Density, MassField::Damping}) {
+    const SparseMatrix M = assembleNodeMatrix(mesh, field);
+    EXPECT_LT(Eigen::MatrixXd(M - SparseMatrix(M.transpose())).cwiseAbs().maxCoeff(), 1e-15);
+    const Eigen::MatrixXd expected = Eigen::MatrixXd(SparseMatrix(A.transpose()) * (M * A));
+    const SparseMatrix reduced = reducedNodeMatrix(mesh, A, field);
+    ASSERT_EQ(reduced.rows(), A.cols());
+    ASSERT_EQ(reduced.cols(), A.cols());
+    EXPECT_LT((Eigen::MatrixXd(reduced) - expected).cwiseAbs().maxCoeff(),
+              1e-13 * expected.cwiseAbs().maxCoeff());
+    // The same pattern as the product's nonzeros, exact zeros left out.
+    EXPECT_EQ(reduced.nonZeros(), (expected.array() != 0.0).count());
+  }
 }
 
 }  // namespace
