@@ -1,7 +1,9 @@
 // The parts of a FEM step on assets/block3.json at simulation level K (the argument): the
 // elastic element pass (rotations and forces), the tricubic kernel alone with its rest data in
-// the cache and streamed, the projections A p and A^T f, and the polar rotations. Per-element
-// and per-node figures come as counters; threads as for the program (SCULPT_THREADS).
+// the cache and streamed, the projections A p and A^T f, and the polar rotations; on an 8^3
+// block, the reduced mass products, the preconditioner's solve and the first step's set-up.
+// Per-element and per-node figures come as counters; threads as for the program
+// (SCULPT_THREADS).
 #include <benchmark/benchmark.h>
 
 #include <Eigen/Geometry>
@@ -10,8 +12,10 @@
 #include <string>
 
 #include "fem/fem_model.h"
+#include "fem/mass_matrix.h"
 #include "fem/polar_rotation.h"
 #include "fem/tricubic_kernel.h"
+#include "sim/linear_stiffness.h"
 #include "sim/standard_forms.h"
 #include "sim/system_preconditioner.h"
 #include "unit_block.h"
@@ -227,6 +231,36 @@ void BM_ApplyReducedMass(benchmark::State& state) {
   state.counters["nonzeros"] = double(mass.nonZeros());
 }
 BENCHMARK(BM_ApplyReducedMass)->Unit(benchmark::kMicrosecond);
+
+// The first implicit step's set-up on the same block: the reduced mass A^T M A (the inertia's
+// and the damping's matrices; painting density rebuilds it) and the preconditioner's stand-in
+// stiffness K~lin, with the step's worker threads.
+void BM_ReducedMassMatrix(benchmark::State& state) {
+  const std::optional<FemModel>& model = block8();
+  if (!model) {
+    state.SkipWithError("the 8^3 block did not build");
+    return;
+  }
+  for (auto _ : state) {
+    SparseMatrix mass =
+        reducedNodeMatrix(model->mesh(), model->stencilMatrix(), MassField::Density);
+    benchmark::DoNotOptimize(mass.valuePtr());
+  }
+}
+BENCHMARK(BM_ReducedMassMatrix)->Unit(benchmark::kMillisecond);
+
+void BM_StandInStiffness(benchmark::State& state) {
+  const std::optional<FemModel>& model = block8();
+  if (!model) {
+    state.SkipWithError("the 8^3 block did not build");
+    return;
+  }
+  for (auto _ : state) {
+    SparseMatrix stiffness = reducedLinearStiffness(*model);
+    benchmark::DoNotOptimize(stiffness.valuePtr());
+  }
+}
+BENCHMARK(BM_StandInStiffness)->Unit(benchmark::kMillisecond);
 
 // One solve of the implicit step's preconditioner (S = M~/h^2 + K~lin at h = 1/60, every
 // coordinate free) on the same block, with the step's worker threads: a CG iteration makes one.

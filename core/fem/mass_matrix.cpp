@@ -158,7 +158,7 @@ Columns nodeMatrixColumns(const FemMesh& mesh, MassField field, bool sorted) {
       for (uint32_t b = 0; b < ids.size(); ++b) slots[cursor[ids[b]]++] = {e, b};
     }
   }
-  return columnsInParallel(numNodes, numNodes, sorted, true, [&](uint32_t j, Accumulator& acc, unsigned) {
+  const auto nodeColumn = [&](uint32_t j, Accumulator& acc, unsigned) {
     alignas(32) double column[kTricubicNodes];
     for (uint32_t s = slotsBegin[j]; s < slotsBegin[j + 1]; ++s) {
       const auto [e, b] = slots[s];
@@ -176,14 +176,16 @@ Columns nodeMatrixColumns(const FemMesh& mesh, MassField field, bool sorted) {
       }
       for (size_t a = 0; a < ids.size(); ++a) acc.add(ids[a], column[a]);
     }
-  });
+  };
+  return columnsInParallel(numNodes, numNodes, sorted, true, nodeColumn);
 }
 
 SparseMatrix toSparse(const Columns& columns, Eigen::Index rows) {
   const Eigen::Index cols = Eigen::Index(columns.begin.size()) - 1;
   SparseMatrix matrix(rows, cols);
   matrix.resizeNonZeros(Eigen::Index(columns.rows.size()));
-  for (Eigen::Index j = 0; j <= cols; ++j) matrix.outerIndexPtr()[j] = int(columns.begin[size_t(j)]);
+  for (Eigen::Index j = 0; j <= cols; ++j)
+    matrix.outerIndexPtr()[j] = int(columns.begin[size_t(j)]);
   std::copy(columns.rows.begin(), columns.rows.end(), matrix.innerIndexPtr());
   std::copy(columns.values.begin(), columns.values.end(), matrix.valuePtr());
   return matrix;

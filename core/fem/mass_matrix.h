@@ -13,7 +13,8 @@ using SparseMatrix = Eigen::SparseMatrix<double>;  // column-major, symmetric us
 
 enum class MassField { Density, Damping };
 
-/// Node-level integral of `field` N^T N over every element (#nodes square).
+/// Node-level integral of `field` N^T N over every element (#nodes square; elements where the
+/// field vanishes add no entries).
 SparseMatrix assembleNodeMatrix(const FemMesh& mesh, MassField field);
 
 /// A as a sparse matrix (#rows by #columns of the stencil table).
