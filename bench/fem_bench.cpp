@@ -214,14 +214,18 @@ const std::optional<FemModel>& block8() {
   return model;
 }
 
+// The block, or null with the benchmark marked as failed when it did not build.
+const FemModel* block8(benchmark::State& state) {
+  const std::optional<FemModel>& model = block8();
+  if (!model) state.SkipWithError("the 8^3 block did not build");
+  return model ? &*model : nullptr;
+}
+
 // Its reduced mass matrix applied to the control points' positions, with the step's worker
 // threads: a CG iteration applies the inertia's and the damping's.
 void BM_ApplyReducedMass(benchmark::State& state) {
-  const std::optional<FemModel>& model = block8();
-  if (!model) {
-    state.SkipWithError("the 8^3 block did not build");
-    return;
-  }
+  const FemModel* model = block8(state);
+  if (!model) return;
   const SparseMatrix& mass = model->reducedMass();
   const Points& x = model->restControl();
   for (auto _ : state) {
@@ -236,11 +240,8 @@ BENCHMARK(BM_ApplyReducedMass)->Unit(benchmark::kMicrosecond);
 // and the damping's matrices; painting density rebuilds it) and the preconditioner's stand-in
 // stiffness K~lin, with the step's worker threads.
 void BM_ReducedMassMatrix(benchmark::State& state) {
-  const std::optional<FemModel>& model = block8();
-  if (!model) {
-    state.SkipWithError("the 8^3 block did not build");
-    return;
-  }
+  const FemModel* model = block8(state);
+  if (!model) return;
   for (auto _ : state) {
     SparseMatrix mass =
         reducedNodeMatrix(model->mesh(), model->stencilMatrix(), MassField::Density);
@@ -250,11 +251,8 @@ void BM_ReducedMassMatrix(benchmark::State& state) {
 BENCHMARK(BM_ReducedMassMatrix)->Unit(benchmark::kMillisecond);
 
 void BM_StandInStiffness(benchmark::State& state) {
-  const std::optional<FemModel>& model = block8();
-  if (!model) {
-    state.SkipWithError("the 8^3 block did not build");
-    return;
-  }
+  const FemModel* model = block8(state);
+  if (!model) return;
   for (auto _ : state) {
     SparseMatrix stiffness = reducedLinearStiffness(*model);
     benchmark::DoNotOptimize(stiffness.valuePtr());
@@ -265,11 +263,8 @@ BENCHMARK(BM_StandInStiffness)->Unit(benchmark::kMillisecond);
 // One solve of the implicit step's preconditioner (S = M~/h^2 + K~lin at h = 1/60, every
 // coordinate free) on the same block, with the step's worker threads: a CG iteration makes one.
 void BM_PreconditionerSolve(benchmark::State& state) {
-  const std::optional<FemModel>& model = block8();
-  if (!model) {
-    state.SkipWithError("the 8^3 block did not build");
-    return;
-  }
+  const FemModel* model = block8(state);
+  if (!model) return;
   std::vector<int> dofs(size_t(3 * model->numControlPoints()));
   for (size_t k = 0; k < dofs.size(); ++k) dofs[k] = int(k);
   SystemPreconditioner preconditioner;
