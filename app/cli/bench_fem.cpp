@@ -26,7 +26,7 @@ namespace sculpt::cli {
 const std::vector<OptionSpec> kFemBenchOptions = {
     {"integrator", true}, {"model", true},       {"steps", true},
     {"dt", true},         {"paint-every", true}, {"cage", true},
-    {"fresh-factor", false}, {"trace", false}};
+    {"paint-field", true}, {"fresh-factor", false}, {"trace", false}};
 
 namespace {
 
@@ -76,12 +76,13 @@ uint32_t cellStride(uint32_t n) {
   return stride;
 }
 
-// Stiffness dabs through the paint tool's stroke (the session script's paint events use the
-// same), on a context over the bare simulator.
+// Stiffness (or density) dabs through the paint tool's stroke (the session script's paint events
+// use the same), on a context over the bare simulator.
 class DabPainter {
  public:
-  explicit DabPainter(Simulator& simulator)
-      : context_(simulator),
+  DabPainter(Simulator& simulator, bool density)
+      : density_(density),
+        context_(simulator),
         centres_(controlCellCentres(simulator.model())),
         stride_(cellStride(static_cast<uint32_t>(centres_.size()))),
         radius_(controlCellSize(simulator.model())),
@@ -94,8 +95,14 @@ class DabPainter {
     PaintStroke::Settings settings;
     settings.brush.radius = radius_;
     settings.brush.target = base_;
-    settings.brush.target.youngs = base_.youngs * (dabs_ % 2 == 0 ? kStiffer : kSofter);
-    settings.brush.fields = FemModel::MaterialFields{false, false, true, false};
+    const double factor = dabs_ % 2 == 0 ? kStiffer : kSofter;
+    if (density_) {
+      settings.brush.target.density = base_.density * factor;
+      settings.brush.fields = FemModel::MaterialFields{true, false, false, false};
+    } else {
+      settings.brush.target.youngs = base_.youngs * factor;
+      settings.brush.fields = FemModel::MaterialFields{false, false, true, false};
+    }
     const size_t cell = (dabs_ * stride_ + centres_.size() / 2) % centres_.size();
     ToolInput input;
     input.restPoint = centres_[cell];
@@ -107,6 +114,7 @@ class DabPainter {
   }
 
  private:
+  bool density_;
   SimulatorToolContext context_;
   std::vector<Eigen::Vector3d> centres_;
   size_t stride_;
@@ -151,6 +159,7 @@ uint32_t fixedCount(const Simulator& simulator) {
 struct BenchRun {
   int steps = 0;
   int paintEvery = 0;
+  bool paintDensity = false;
   bool freshFactor = false;
   bool trace = false;
   std::string levels;
@@ -164,7 +173,7 @@ int benchAndPrint(Simulator& simulator, const BenchRun& run, std::optional<doubl
   std::cout << "threads=" << workerCount() << " levels=" << run.levels
             << " integrator=" << integratorName(settings.integrator) << " dt=" << settings.timeStep
             << " steps=" << run.steps << " warmup=" << FemBenchOptions{}.warmupSteps
-            << " paint_every=" << run.paintEvery
+            << " paint_every=" << run.paintEvery << (run.paintDensity ? " paint_field=density" : "")
             << (run.freshFactor ? " fresh_factor=1" : "") << '\n'
             << "setup_ms=" << ms(run.setupMs) << " control_points=" << model.numControlPoints()
             << " nodes=" << model.numNodes() << " fixed=" << fixedCount(simulator) << '\n';
@@ -173,6 +182,7 @@ int benchAndPrint(Simulator& simulator, const BenchRun& run, std::optional<doubl
   FemBenchOptions options;
   options.steps = run.steps;
   options.paintEvery = run.paintEvery;
+  options.paintDensity = run.paintDensity;
   options.freshFactor = run.freshFactor;
   options.trace = run.trace;
   options.firstStepMs = firstStepMs;
@@ -285,7 +295,7 @@ FemBenchFigures runFemBench(Simulator& simulator, const FemBenchOptions& options
   };
   std::optional<DabPainter> painter;
   if (options.paintEvery > 0) {
-    painter.emplace(simulator);
+    painter.emplace(simulator, options.paintDensity);
     figures.dabRadius = painter->radius();
   }
   auto paintBefore = [&](int stepIndex, int& dabs) {
@@ -352,6 +362,12 @@ int benchFemCommand(const CliArgs& args, std::string& file) {
   run.steps = args.intValue("steps", 100, 1, 1'000'000);
   run.paintEvery = args.intValue("paint-every", 0, 1, 1'000'000);
   run.freshFactor = args.has("fresh-factor");
+  const std::string field = args.value("paint-field").value_or("youngs");
+  if (field != "youngs" && field != "density")
+    throw UsageError("--paint-field is youngs or density, not '" + field + "'");
+  run.paintDensity = field == "density";
+  if (args.has("paint-field") && run.paintEvery == 0)
+    throw UsageError("--paint-field chooses what the dabs paint: it needs --paint-every");
   run.trace = args.has("trace");
   if (run.freshFactor && run.paintEvery == 0)
     throw UsageError("--fresh-factor refactors after each dab: it needs --paint-every");

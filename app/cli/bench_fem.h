@@ -17,6 +17,7 @@ struct FemBenchOptions {
   int steps = 100;       ///< measured steps
   int warmupSteps = 3;   ///< untimed steps after the first one
   int paintEvery = 0;    ///< a stiffness dab before every N-th warm-up and measured step; 0: none
+  bool paintDensity = false;  ///< the dabs paint density (10x and 0.1x) instead of stiffness
   /// After each dab, outside the timing, a new preconditioner factor for the new materials
   /// (Simulator::refactorPreconditioner): steps free of the factor's age, for comparison.
   bool freshFactor = false;

@@ -77,23 +77,62 @@ void FemModel::addToControl(const Points& nodeVectors, Points& control) const {
 
 void FemModel::refreshMatrices() const {
   if (!matricesStale_) return;
-  reducedMass_ = reducedNodeMatrix(*mesh_, A_, MassField::Density);
-  // Damping proportional to density everywhere (any uniform material) gives D~ = ratio M~ (to
-  // rounding): no second assembly and reduction, a third of the first step's set-up.
-  const std::vector<Material>& samples = mesh_->gaussMaterial;
-  const double ratio = samples.empty() || !(samples.front().density > 0.0)
-                           ? -1.0
-                           : samples.front().damping / samples.front().density;
-  const bool proportional =
-      ratio >= 0.0 && std::all_of(samples.begin(), samples.end(), [&](const Material& m) {
-        return std::abs(m.damping - ratio * m.density) <= 1e-12 * std::abs(m.damping);
-      });
-  if (proportional) {
-    reducedDamping_ = ratio * reducedMass_;
-    reducedDamping_.prune(0.0);  // zero damping: an empty matrix, as the assembly gives
+  std::vector<double> density = fieldWeights(*mesh_, MassField::Density);
+  std::vector<double> damping = fieldWeights(*mesh_, MassField::Damping);
+  // The matrices are linear in the weights: after a paint dab, the change of weights on the
+  // painted elements gives the change of the matrices (a dab on the bunny touches a few percent
+  // of the elements; a whole rebuild made every step of a density stroke several times longer).
+  std::vector<uint8_t> changed(mesh_->numElements(), 0);
+  uint32_t changedCount = 0;
+  const bool haveLast = assembledDensity_.size() == density.size();
+  if (haveLast)
+    for (uint32_t e = 0; e < mesh_->numElements(); ++e)
+      for (uint32_t q = mesh_->gaussBegin(e); q < mesh_->gaussBegin(e) + mesh_->gaussCount(e); ++q)
+        if (density[q] != assembledDensity_[q] || damping[q] != assembledDamping_[q]) {
+          changed[e] = 1;
+          ++changedCount;
+          break;
+        }
+  SparseMatrix mass, dampingMatrix;  // made first, kept only when both are made
+  if (haveLast && 4 * changedCount <= mesh_->numElements()) {
+    std::vector<double> delta(density.size(), 0.0);
+    const auto updated = [&](const SparseMatrix& matrix, const std::vector<double>& now,
+                             const std::vector<double>& before) {
+      bool any = false;
+      for (size_t q = 0; q < now.size(); ++q) {
+        delta[q] = now[q] - before[q];
+        any = any || delta[q] != 0.0;
+      }
+      if (!any) return matrix;
+      SparseMatrix sum = matrix + reducedWeightedMatrix(*mesh_, A_, delta, changed);
+      sum.prune(0.0);  // a field painted back to zero leaves no entries, as a rebuild
+      return sum;
+    };
+    mass = updated(reducedMass_, density, assembledDensity_);
+    dampingMatrix = updated(reducedDamping_, damping, assembledDamping_);
   } else {
-    reducedDamping_ = reducedNodeMatrix(*mesh_, A_, MassField::Damping);
+    mass = reducedWeightedMatrix(*mesh_, A_, density);
+    // Damping proportional to density everywhere (any uniform material) gives D~ = ratio M~ (to
+    // rounding): no second assembly and reduction, a third of the first step's set-up.
+    const std::vector<Material>& samples = mesh_->gaussMaterial;
+    const double ratio = samples.empty() || !(samples.front().density > 0.0)
+                             ? -1.0
+                             : samples.front().damping / samples.front().density;
+    const bool proportional =
+        ratio >= 0.0 && std::all_of(samples.begin(), samples.end(), [&](const Material& m) {
+          return std::abs(m.damping - ratio * m.density) <= 1e-12 * std::abs(m.damping);
+        });
+    if (proportional) {
+      dampingMatrix = ratio * mass;
+      dampingMatrix.prune(0.0);  // zero damping: an empty matrix, as the assembly gives
+    } else {
+      dampingMatrix = reducedWeightedMatrix(*mesh_, A_, damping);
+    }
   }
+  reducedMass_ = std::move(mass);
+  reducedDamping_ = std::move(dampingMatrix);
+  assembledDensity_ = std::move(density);
+  assembledDamping_ = std::move(damping);
   matricesStale_ = false;
 }
 

@@ -91,6 +91,8 @@ class FemModel {
   std::unique_ptr<ElasticKernel> elastic_;
   SparseMatrix A_;
   mutable SparseMatrix reducedMass_, reducedDamping_;
+  // The Gauss-point weights (field times volume) the matrices were last made from.
+  mutable std::vector<double> assembledDensity_, assembledDamping_;
   mutable bool matricesStale_ = true;
   uint64_t materialVersion_ = 0;
   uint64_t massVersion_ = 0;

@@ -124,9 +124,12 @@ Columns columnsInParallel(uint32_t n, size_t rows, bool sorted, bool keepZeros,
   return all;
 }
 
-// The node matrix of `field`, each node's column gathered from the elements around the node:
-// a dense accumulator per column instead of a search for every element entry in the pattern.
-Columns nodeMatrixColumns(const FemMesh& mesh, MassField field, bool sorted) {
+// The node matrix of the Gauss-point weights `weights` (a field times the Gauss volume) over the
+// elements marked in `included` (all when empty), each node's column gathered from the elements
+// around the node: a dense accumulator per column instead of a search for every element entry in
+// the pattern.
+Columns nodeMatrixColumns(const FemMesh& mesh, std::span<const double> weights,
+                          std::span<const uint8_t> included, bool sorted) {
   const TricubicMassColumns tricubic;
   const Eigen::MatrixXd hexN = linearShapeTable(false);
   const Eigen::MatrixXd pyramidN = linearShapeTable(true);
@@ -135,25 +138,25 @@ Columns nodeMatrixColumns(const FemMesh& mesh, MassField field, bool sorted) {
     if (e < mesh.numTricubic()) return mesh.tricubicNodes[e];
     return mesh.linearNodes[e - mesh.numTricubic()];
   };
-  // The field times the Gauss volume; an element where it vanishes adds nothing.
-  std::vector<double> weights(mesh.numGaussPoints());
+  // An element left out, or where the weights vanish, adds nothing.
   std::vector<uint8_t> empty(numElements, 1);
-  for (uint32_t e = 0; e < numElements; ++e)
-    for (uint32_t q = mesh.gaussBegin(e); q < mesh.gaussBegin(e) + mesh.gaussCount(e); ++q) {
-      const Material& m = mesh.gaussMaterial[q];
-      weights[q] = (field == MassField::Density ? m.density : m.damping) * mesh.gaussVolume[q];
+  for (uint32_t e = 0; e < numElements; ++e) {
+    if (!included.empty() && !included[e]) continue;
+    for (uint32_t q = mesh.gaussBegin(e); q < mesh.gaussBegin(e) + mesh.gaussCount(e); ++q)
       if (weights[q] != 0.0) empty[e] = 0;
-    }
+  }
   // Each node's (element, local node) slots. A node repeated in an element (a pyramid's apex)
   // has a slot for each of its places there, and the element's columns for both add up.
   std::vector<uint32_t> slotsBegin(numNodes + 1, 0);
   for (uint32_t e = 0; e < numElements; ++e)
-    for (uint32_t j : elementNodes(e)) ++slotsBegin[j + 1];
+    if (!empty[e])
+      for (uint32_t j : elementNodes(e)) ++slotsBegin[j + 1];
   for (uint32_t j = 0; j < numNodes; ++j) slotsBegin[j + 1] += slotsBegin[j];
   std::vector<std::pair<uint32_t, uint32_t>> slots(slotsBegin.back());
   {
     std::vector<uint32_t> cursor(slotsBegin.begin(), slotsBegin.end() - 1);
     for (uint32_t e = 0; e < numElements; ++e) {
+      if (empty[e]) continue;
       const std::span<const uint32_t> ids = elementNodes(e);
       for (uint32_t b = 0; b < ids.size(); ++b) slots[cursor[ids[b]]++] = {e, b};
     }
@@ -162,7 +165,6 @@ Columns nodeMatrixColumns(const FemMesh& mesh, MassField field, bool sorted) {
     alignas(32) double column[kTricubicNodes];
     for (uint32_t s = slotsBegin[j]; s < slotsBegin[j + 1]; ++s) {
       const auto [e, b] = slots[s];
-      if (empty[e]) continue;
       const double* w = weights.data() + mesh.gaussBegin(e);
       const std::span<const uint32_t> ids = elementNodes(e);
       if (e < mesh.numTricubic()) {
@@ -193,15 +195,30 @@ SparseMatrix toSparse(const Columns& columns, Eigen::Index rows) {
 
 }  // namespace
 
+std::vector<double> fieldWeights(const FemMesh& mesh, MassField field) {
+  std::vector<double> weights(mesh.numGaussPoints());
+  for (uint32_t q = 0; q < mesh.numGaussPoints(); ++q) {
+    const Material& m = mesh.gaussMaterial[q];
+    weights[q] = (field == MassField::Density ? m.density : m.damping) * mesh.gaussVolume[q];
+  }
+  return weights;
+}
+
 SparseMatrix assembleNodeMatrix(const FemMesh& mesh, MassField field) {
-  return toSparse(nodeMatrixColumns(mesh, field, true), mesh.numNodes());
+  return toSparse(nodeMatrixColumns(mesh, fieldWeights(mesh, field), {}, true), mesh.numNodes());
 }
 
 SparseMatrix reducedNodeMatrix(const FemMesh& mesh, const SparseMatrix& A, MassField field) {
+  return reducedWeightedMatrix(mesh, A, fieldWeights(mesh, field));
+}
+
+SparseMatrix reducedWeightedMatrix(const FemMesh& mesh, const SparseMatrix& A,
+                                   std::span<const double> weights,
+                                   std::span<const uint8_t> included) {
   // Column c of A^T M A is A^T (M a_c), a_c column c of A: M's columns for the nodes of a_c
   // summed into one dense accumulator over the nodes, then those nodes' rows of A into one over
   // the control points. M's columns need no order.
-  const Columns M = nodeMatrixColumns(mesh, field, false);
+  const Columns M = nodeMatrixColumns(mesh, weights, included, false);
   const SparseMatrix At = A.transpose();  // column n: the control points of node n's row of A
   const uint32_t numControl = uint32_t(A.cols());
   std::vector<Accumulator> nodeSums(workerCount(), Accumulator(size_t(A.rows()), 0.0));

@@ -4,6 +4,9 @@
 // blocks share one scalar matrix.
 
 #include <Eigen/SparseCore>
+#include <cstdint>
+#include <span>
+#include <vector>
 
 #include "fem/fem_mesh.h"
 
@@ -22,5 +25,14 @@ SparseMatrix stencilMatrix(const StencilTable& stencils);
 
 /// A^T M A for the node matrix M of `field` (assembleNodeMatrix), with A the stencil matrix.
 SparseMatrix reducedNodeMatrix(const FemMesh& mesh, const SparseMatrix& A, MassField field);
+
+/// The Gauss-point weights of `field`: its value times the Gauss volume.
+std::vector<double> fieldWeights(const FemMesh& mesh, MassField field);
+/// A^T M A for the node matrix M of per-Gauss-point `weights` (a field times the Gauss volume),
+/// over the elements marked in `included` only (every element when empty). Linear in the
+/// weights: the change of weights on a few elements gives the change of the reduced matrix.
+SparseMatrix reducedWeightedMatrix(const FemMesh& mesh, const SparseMatrix& A,
+                                   std::span<const double> weights,
+                                   std::span<const uint8_t> included = {});
 
 }  // namespace sculpt

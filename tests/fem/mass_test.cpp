@@ -306,5 +306,42 @@ TEST(MassMatrix, ReducedMatrixIsTheSparseProductOfTheStencilsAndTheNodeMatrix) {
   }
 }
 
+TEST(MassMatrix, PaintedMatricesAreWhatARebuildGives) {
+  // Once assembled, the reduced mass and damping follow a paint dab by the change on the painted
+  // elements alone; they must equal matrices rebuilt from the painted materials, and come back
+  // to the first ones when the materials do (undo).
+  Material base;
+  base.density = 1200;
+  base.damping = 30;
+  auto model = makeModel(jittered(mixedMesh(), 0.05, 8), 2, false, base);
+  ASSERT_TRUE(model);
+  const FemMesh& mesh = model->mesh();
+  const SparseMatrix mass0 = model->reducedMass(), damping0 = model->reducedDamping();
+  const std::vector<Material> original = mesh.gaussMaterial;
+  const auto relativeDifference = [](const SparseMatrix& a, const SparseMatrix& b) {
+    return Eigen::MatrixXd(a - b).cwiseAbs().maxCoeff() /
+           Eigen::MatrixXd(b).cwiseAbs().maxCoeff();
+  };
+
+  Material painted;
+  painted.density = 9000;
+  painted.damping = 400;
+  const Eigen::Vector3d corner = model->restControl().colwise().minCoeff().transpose();
+  const long samples = model->paintMaterial(corner, 0.5, painted);
+  ASSERT_GT(samples, 0);
+  ASSERT_LT(samples, long(mesh.numGaussPoints()) / 8);  // a dab, not a repaint of everything
+  const SparseMatrix& A = model->stencilMatrix();
+  const SparseMatrix rebuiltMass = reducedNodeMatrix(mesh, A, MassField::Density);
+  const SparseMatrix rebuiltDamping = reducedNodeMatrix(mesh, A, MassField::Damping);
+  EXPECT_GT(relativeDifference(rebuiltMass, mass0), 1e-3);  // the dab changed the mass
+  EXPECT_LT(relativeDifference(model->reducedMass(), rebuiltMass), 1e-13);
+  EXPECT_LT(relativeDifference(model->reducedDamping(), rebuiltDamping), 1e-13);
+
+  std::string error;
+  ASSERT_TRUE(model->setMaterials(original, &error)) << error;
+  EXPECT_LT(relativeDifference(model->reducedMass(), mass0), 1e-13);
+  EXPECT_LT(relativeDifference(model->reducedDamping(), damping0), 1e-13);
+}
+
 }  // namespace
 }  // namespace sculpt
