@@ -259,14 +259,20 @@ TEST(MassMatrix, TricubicEntriesAreTheQuadratureOfTheSquaredField) {
               expected);
 }
 
-TEST(MassMatrix, DampingMatrixIsDampingOverDensityTimesMass) {
+// The jittered mixed mesh at `level`, density 1200 kg/m^3 and damping 30 kg/(m^3 s).
+constexpr double kDampedDensity = 1200, kDampedDamping = 30;
+std::optional<FemModel> dampedMixedModel(int level) {
   Material material;
-  material.density = 1200;
-  material.damping = 30;
-  auto model = makeModel(jittered(mixedMesh(), 0.05, 8), 1, false, material);
+  material.density = kDampedDensity;
+  material.damping = kDampedDamping;
+  return makeModel(jittered(mixedMesh(), 0.05, 8), level, false, material);
+}
+
+TEST(MassMatrix, DampingMatrixIsDampingOverDensityTimesMass) {
+  auto model = dampedMixedModel(1);
   ASSERT_TRUE(model);
   const SparseMatrix difference =
-      model->reducedDamping() - (material.damping / material.density) * model->reducedMass();
+      model->reducedDamping() - (kDampedDamping / kDampedDensity) * model->reducedMass();
   EXPECT_LT(Eigen::MatrixXd(difference).cwiseAbs().maxCoeff(),
             1e-14 * Eigen::MatrixXd(model->reducedDamping()).cwiseAbs().maxCoeff());
   auto undamped = makeModel(mixedMesh(), 1, false);
@@ -310,10 +316,7 @@ TEST(MassMatrix, PaintedMatricesAreWhatARebuildGives) {
   // Once assembled, the reduced mass and damping follow a paint dab by the change on the painted
   // elements alone; they must equal matrices rebuilt from the painted materials, and come back
   // to the first ones when the materials do (undo).
-  Material base;
-  base.density = 1200;
-  base.damping = 30;
-  auto model = makeModel(jittered(mixedMesh(), 0.05, 8), 2, false, base);
+  auto model = dampedMixedModel(2);
   ASSERT_TRUE(model);
   const FemMesh& mesh = model->mesh();
   const SparseMatrix mass0 = model->reducedMass(), damping0 = model->reducedDamping();
