@@ -1,6 +1,7 @@
 // sculpt-cli bench fem end to end: the step figures of the last line (first step, median, 99th
-// percentile, maximum, the elastic pass and the step in elastic passes), stiffness dabs painted
-// with --paint-every, a scene instead of a control mesh, and bad options as usage errors.
+// percentile, maximum, the elastic pass and the step in elastic passes), stiffness or density
+// dabs painted with --paint-every, a scene instead of a control mesh, and bad options as usage
+// errors.
 
 #include <gtest/gtest.h>
 
@@ -116,6 +117,15 @@ TEST_F(BenchFemCliTest, BenchFemPaintEveryPaintsDeterministicDabs) {
   bench(kBlock + " --steps 4 --paint-every 1", &every);
   EXPECT_NE(lineStartingWith(every.out, "dabs").find("dabs=4 warmup_dabs=3 "), std::string::npos)
       << every.out;
+
+  // Density dabs: the same cells painted, the mass matrices updated instead of the stiffness.
+  CliResult density;
+  const std::map<std::string, double> c =
+      bench(kBlock + " --steps 6 --paint-every 2 --paint-field density", &density);
+  EXPECT_NE(density.out.find(" paint_every=2 paint_field=density\n"), std::string::npos)
+      << density.out;
+  EXPECT_EQ(lineStartingWith(density.out, "dabs"), dabs);
+  EXPECT_GT(c.at("cg_iterations"), 0);
 }
 
 TEST_F(BenchFemCliTest, BenchFemTracesStepsAndRefactorsForEveryDabWhenAsked) {
@@ -167,6 +177,10 @@ TEST_F(BenchFemCliTest, BenchFemRefusesBadOptions) {
   expectBadInput("bench fem " + quote(kAssets + "bunny.obj") + " --E 5", "--E is for control");
   expectBadInput("bench fem " + quote(kAssets + "bunny.obj") + " --levels 4",
                  "--levels must be an integer from 1 to 3");
+  expectBadInput("bench fem " + kBlock + " --steps 2 --paint-every 1 --paint-field mass",
+                 "--paint-field is youngs or density, not 'mass'");
+  expectBadInput("bench fem " + kBlock + " --steps 2 --paint-field density",
+                 "--paint-field chooses what the dabs paint: it needs --paint-every");
   expectBadInput("bench fem", "exactly one CONTROL file or SCENE");
   expectBadInput("bench subdivide " + kBlock + " --paint-every 2",
                  "--paint-every applies to bench fem");
