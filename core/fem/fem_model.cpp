@@ -2,6 +2,7 @@
 
 #include <algorithm>
 #include <cmath>
+#include <numeric>
 
 #include "mesh/topology.h"
 
@@ -147,10 +148,8 @@ const SparseMatrix& FemModel::reducedDamping() const {
 }
 
 double FemModel::totalMass() const {
-  double m = 0;
-  for (uint32_t q = 0; q < mesh_->numGaussPoints(); ++q)
-    m += mesh_->gaussMaterial[q].density * mesh_->gaussVolume[q];
-  return m;
+  const std::vector<double> masses = fieldWeights(*mesh_, MassField::Density);
+  return std::accumulate(masses.begin(), masses.end(), 0.0);
 }
 
 long FemModel::paintMaterial(const Eigen::Vector3d& centre, double radius,
