@@ -237,8 +237,8 @@ void BM_ApplyReducedMass(benchmark::State& state) {
 BENCHMARK(BM_ApplyReducedMass)->Unit(benchmark::kMicrosecond);
 
 // The first implicit step's set-up on the same block: the reduced mass A^T M A (the inertia's
-// and the damping's matrices; painting density rebuilds it) and the preconditioner's stand-in
-// stiffness K~lin, with the step's worker threads.
+// and the damping's matrices; made whole again only when most of the density changes) and the
+// preconditioner's stand-in stiffness K~lin, with the step's worker threads.
 void BM_ReducedMassMatrix(benchmark::State& state) {
   const FemModel* model = block8(state);
   if (!model) return;
