@@ -260,6 +260,19 @@ void BM_StandInStiffness(benchmark::State& state) {
 }
 BENCHMARK(BM_StandInStiffness)->Unit(benchmark::kMillisecond);
 
+// The elements' own rest stiffness on the same block, what the preconditioner's second factor is
+// made from: every tricubic element shares one pair of parts, so this is mostly its assembly.
+void BM_RestStiffness(benchmark::State& state) {
+  const FemModel* model = block8(state);
+  if (!model) return;
+  const FemMesh& mesh = model->mesh();
+  for (auto _ : state) {
+    SparseMatrix stiffness = reducedRestStiffness(mesh, mesh.gaussLame, model->stencilMatrix());
+    benchmark::DoNotOptimize(stiffness.valuePtr());
+  }
+}
+BENCHMARK(BM_RestStiffness)->Unit(benchmark::kMillisecond);
+
 // One solve of the implicit step's preconditioner (S = M~/h^2 + K~lin at h = 1/60, every
 // coordinate free) on the same block, with the step's worker threads: a CG iteration makes one.
 void BM_PreconditionerSolve(benchmark::State& state) {

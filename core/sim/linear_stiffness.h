@@ -20,6 +20,14 @@ SparseMatrix reducedLinearStiffness(const FemModel& model);
 SparseMatrix reducedLinearStiffness(const FemMesh& mesh, std::span<const LameParameters> lame,
                                     const SparseMatrix& A);
 
+/// The elements' own rest stiffness reduced to the control points, A^T K A: each tricubic
+/// element with its B-spline shape functions at its 4^3 Gauss points (what the elastic kernel's
+/// Hessian product gives at rotation I), each linear one as above. It couples each control point
+/// with 7^3 others inside a regular lattice at K = 1 where the stand-in couples 5^3, so its
+/// factor is denser and slower to make; preconditioned with it, CG takes fewer iterations.
+SparseMatrix reducedRestStiffness(const FemMesh& mesh, std::span<const LameParameters> lame,
+                                  const SparseMatrix& A);
+
 /// Per control point, A^T v with v_n the sum, over the stand-in elements with corner node n, of
 /// their mean P-wave modulus lambda + 2 mu: how strongly the materials around the point weigh in
 /// the stand-in's diagonal. Its ratio between two material states rescales a factor.

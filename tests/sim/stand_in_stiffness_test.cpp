@@ -7,11 +7,13 @@
 
 #include <Eigen/Dense>
 #include <Eigen/Eigenvalues>
+#include <algorithm>
 #include <cstdio>
 #include <filesystem>
 
 #include "sim/linear_stiffness.h"
 #include "support/fem_builders.h"
+#include "support/mesh_builders.h"
 
 namespace sculpt {
 namespace {
@@ -66,6 +68,44 @@ TEST(StandInStiffness, IsSpectrallyCloseToTheElementsStiffness) {
   // its softest mismatch costs the bunny one CG iteration in six.
   EXPECT_GT(lowest, 0.62);
   EXPECT_LT(highest, 1.05);
+}
+
+// The largest entry of |X - Y| over the largest of |Y|.
+double relativeDifference(const Eigen::MatrixXd& X, const Eigen::MatrixXd& Y) {
+  return (X - Y).cwiseAbs().maxCoeff() / Y.cwiseAbs().maxCoeff();
+}
+
+TEST(RestStiffness, IsTheElementsStiffnessReducedToTheControlPoints) {
+  // Tricubic, trilinear and pyramid elements, jittered so that no element is affine, with a
+  // painted ball: materials that vary between the Gauss points of an element.
+  auto mixed = test::buildModel(test::jittered(test::mixedMesh(), 0.05, 8), 2, false);
+  ASSERT_TRUE(mixed);
+  Material painted;
+  painted.youngs = 7e5;
+  painted.poisson = 0.45;
+  const Eigen::Vector3d centre = mixed->restControl().colwise().mean().transpose();
+  ASSERT_GT(mixed->paintMaterial(centre, 0.6, painted), 0);
+  const FemMesh& mesh = mixed->mesh();
+  ASSERT_GT(mesh.numTricubic(), 0u);
+  ASSERT_GT(std::count(mesh.elementType.begin(), mesh.elementType.end(), ElementType::Pyramid), 0);
+  const Eigen::MatrixXd exact =
+      Eigen::MatrixXd(reducedRestStiffness(mesh, mesh.gaussLame, mixed->stencilMatrix()));
+  const double mixedDifference = relativeDifference(exact, probedStiffness(*mixed));
+  // A block of unit cells: every tricubic element affine, their parts shared, with a painted
+  // ball, so that some elements use the shared parts and some their own.
+  const CellComplex control =
+      loadControlMeshJson(std::filesystem::path(SCULPT_SOURCE_DIR) / "assets/table1/block4.json");
+  auto block = test::buildModel(control, 1, false);
+  ASSERT_TRUE(block);
+  ASSERT_GT(block->paintMaterial(block->restControl().row(0).transpose(), 1.5, painted), 0);
+  const FemMesh& blockMesh = block->mesh();
+  const Eigen::MatrixXd blockExact =
+      Eigen::MatrixXd(reducedRestStiffness(blockMesh, blockMesh.gaussLame, block->stencilMatrix()));
+  const double blockDifference = relativeDifference(blockExact, probedStiffness(*block));
+  std::printf("[ rest stiffness ] against the probed Hessian: %.2e (mixed), %.2e (block4)\n",
+              mixedDifference, blockDifference);
+  EXPECT_LT(mixedDifference, 1e-12);
+  EXPECT_LT(blockDifference, 1e-12);
 }
 
 }  // namespace
