@@ -52,18 +52,6 @@ class ElementStiffnessSum {
   Eigen::Matrix<double, 8, 8> gram_ = Eigen::Matrix<double, 8, 8>::Zero();
 };
 
-// The 8 nodes of element e's stand-in: a trilinear or pyramid element's own, a tricubic
-// element's cell corners (block [1,2]^3 of its 4^3 nodes) in trilinear order.
-std::array<uint32_t, 8> standInCorners(const FemMesh& mesh, uint32_t e) {
-  if (e >= mesh.numTricubic()) return mesh.linearNodes[e - mesh.numTricubic()];
-  std::array<uint32_t, 8> ids;
-  const auto& block = mesh.tricubicNodes[e];
-  for (int a = 0; a < 8; ++a) {
-    const int* corner = kTrilinearCorner[a];
-    ids[a] = block[(1 + corner[0]) * 16 + (1 + corner[1]) * 4 + (1 + corner[2])];
-  }
-  return ids;
-}
 
 LameParameters meanLame(const FemMesh& mesh, std::span<const LameParameters> lame, uint32_t e) {
   const uint32_t g0 = mesh.gaussBegin(e);
@@ -271,6 +259,17 @@ class TricubicStiffness {
 
 }  // namespace
 
+std::array<uint32_t, 8> elementCorners(const FemMesh& mesh, uint32_t e) {
+  if (e >= mesh.numTricubic()) return mesh.linearNodes[e - mesh.numTricubic()];
+  std::array<uint32_t, 8> ids;
+  const auto& block = mesh.tricubicNodes[e];
+  for (int a = 0; a < 8; ++a) {
+    const int* corner = kTrilinearCorner[a];
+    ids[a] = block[(1 + corner[0]) * 16 + (1 + corner[1]) * 4 + (1 + corner[2])];
+  }
+  return ids;
+}
+
 SparseMatrix reducedLinearStiffness(const FemModel& model) {
   return reducedLinearStiffness(model.mesh(), model.mesh().gaussLame, model.stencilMatrix());
 }
@@ -280,7 +279,7 @@ Eigen::VectorXd controlPointModulus(const FemMesh& mesh, std::span<const LamePar
   Eigen::VectorXd nodeModulus = Eigen::VectorXd::Zero(Eigen::Index(mesh.numNodes()));
   for (uint32_t e = 0; e < mesh.numElements(); ++e) {
     const LameParameters m = meanLame(mesh, lame, e);
-    for (uint32_t id : standInCorners(mesh, e)) nodeModulus[id] += m.lambda + 2 * m.mu;
+    for (uint32_t id : elementCorners(mesh, e)) nodeModulus[id] += m.lambda + 2 * m.mu;
   }
   return A.transpose() * nodeModulus;
 }
@@ -300,7 +299,7 @@ SparseMatrix reducedLinearStiffness(const FemMesh& mesh, std::span<const LamePar
                std::vector<std::vector<Eigen::Matrix3d>>(mesh.numNodes())};
   for (uint32_t e = 0; e < mesh.numElements(); ++e) {
     ElementStiffnessSum sum;
-    const std::array<uint32_t, 8> ids = standInCorners(mesh, e);
+    const std::array<uint32_t, 8> ids = elementCorners(mesh, e);
     if (e < mesh.numTricubic()) {
       const LameParameters mean = meanLame(mesh, lame, e);
       for (int i = 0; i < 2; ++i)

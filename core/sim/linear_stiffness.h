@@ -6,6 +6,8 @@
 // to the smoother B-spline element. Reduced to the control points as (A x I3)^T K (A x I3),
 // computed on 3x3 node blocks.
 
+#include <array>
+#include <cstdint>
 #include <span>
 
 #include "fem/fem_model.h"
@@ -27,6 +29,10 @@ SparseMatrix reducedLinearStiffness(const FemMesh& mesh, std::span<const LamePar
 /// factor is denser and slower to make; preconditioned with it, CG takes fewer iterations.
 SparseMatrix reducedRestStiffness(const FemMesh& mesh, std::span<const LameParameters> lame,
                                   const SparseMatrix& A);
+
+/// The 8 nodes of element e's stand-in: a trilinear or pyramid element's own, a tricubic
+/// element's cell corners (block [1,2]^3 of its 4^3 nodes), in trilinear order.
+std::array<uint32_t, 8> elementCorners(const FemMesh& mesh, uint32_t e);
 
 /// Per control point, A^T v with v_n the sum, over the stand-in elements with corner node n, of
 /// their mean P-wave modulus lambda + 2 mu: how strongly the materials around the point weigh in

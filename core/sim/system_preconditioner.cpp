@@ -5,6 +5,7 @@
 #include <optional>
 #include <stdexcept>
 
+#include "fem/elastic_kernel.h"
 #include "sim/linear_stiffness.h"
 
 namespace sculpt {
@@ -12,6 +13,11 @@ namespace sculpt {
 struct SystemPreconditioner::Factor {
   SparseCholesky cholesky;
   bool valid = false;
+  bool restStiffness = false;  // the elements' own rest stiffness, not the stand-in
+  // The stiffness makes up enough of S's diagonal for solves in the points' rotated frames to
+  // be worth trying: where the inertia dominates, turning it with the points (R M~ R^T, not M~)
+  // costs more than the turned stiffness saves.
+  bool stiffnessDominated = false;
   double scales[3] = {0, 0, 0};
   std::vector<int> freeDofs;
   uint64_t materialVersion = 0;
@@ -33,15 +39,23 @@ struct SystemPreconditioner::Request {
   uint64_t materialVersion = 0;
   std::optional<SparseMatrix> stiffness;  // K~lin, when assembled already
   std::optional<Eigen::VectorXd> modulus;  // its controlPointModulus
+  bool restStiffness = false;  // the elements' own rest stiffness instead of K~lin
+  std::shared_ptr<const std::atomic<bool>> cancelled;  // set: stop after the stiffness
 };
 
 namespace {
 using Clock = std::chrono::steady_clock;
+// The default bunny: 0.57 (rotated solves: 3 CG iterations instead of 5); the blocks, the head
+// and the bridge of docs/BENCHMARKS.md at K = 1 and 2: 0.10-0.19 (rotated solves took 1.3-2x
+// the iterations).
+constexpr double kStiffnessShareForRotations = 1.0 / 3.0;
 }  // namespace
 
 SystemPreconditioner::SystemPreconditioner(SparseCholesky::Method method) : method_(method) {}
 
 SystemPreconditioner::~SystemPreconditioner() {
+  if (upgradeCancelled_) *upgradeCancelled_ = true;
+  if (upgrade_.valid()) upgrade_.wait();
   if (pending_.valid()) pending_.wait();
   if (firstFactor_.valid()) firstFactor_.wait();
 }
@@ -112,9 +126,12 @@ std::unique_ptr<SystemPreconditioner::Factor> factorRequest(
   const Clock::time_point start = Clock::now();
   auto factor = analysed ? std::move(analysed)
                          : std::make_unique<SystemPreconditioner::Factor>(method);
-  const SparseMatrix stiffness = request.stiffness
-                                     ? *request.stiffness
-                                     : reducedLinearStiffness(*request.mesh, request.lame, *request.A);
+  const SparseMatrix stiffness =
+      request.stiffness       ? *request.stiffness
+      : request.restStiffness ? reducedRestStiffness(*request.mesh, request.lame, *request.A)
+                              : reducedLinearStiffness(*request.mesh, request.lame, *request.A);
+  if (request.cancelled && *request.cancelled) return nullptr;
+  factor->restStiffness = request.restStiffness;
   factor->stiffnessDiagonal = stiffness.diagonal();
   factor->modulus = request.modulus
                         ? *request.modulus
@@ -123,6 +140,9 @@ std::unique_ptr<SystemPreconditioner::Factor> factorRequest(
   const SparseMatrix restricted =
       restrictToFree(systemMatrix(stiffness, request), request.freeDofs, &diagonalSum);
   const int n = int(restricted.rows());
+  double stiffnessSum = 0;
+  for (int dof : request.freeDofs) stiffnessSum += request.scales[2] * factor->stiffnessDiagonal[dof];
+  factor->stiffnessDominated = stiffnessSum >= kStiffnessShareForRotations * diagonalSum;
 
   // Every point pinned: nothing to solve for, and CHOLMOD refuses an empty matrix.
   if (n == 0) factor->valid = true;
@@ -187,6 +207,8 @@ void SystemPreconditioner::adopt(std::unique_ptr<Factor> factor) {
   factor_ = std::move(factor);
   ++stats_.factorizations;
   stats_.lastFactorMs = factor_->milliseconds;
+  stats_.restStiffness = factor_->restStiffness;
+  if (factor_->restStiffness) ++stats_.restStiffnessFactorizations;
   stats_.factorNonZeros = factor_->cholesky.factorNonZeros();
   freshIterations_ = -1;
   drifted_ = false;
@@ -227,9 +249,72 @@ bool SystemPreconditioner::update(const FemModel& model, double massScale, doubl
     // Pins or materials moved away from the factor: make a new one while this one serves.
     startBackground(model, massScale, dampingScale, stiffnessScale, freeDofs);
   }
+  countQuietSolves(model);
+  upgradeToRestStiffness(model, freeDofs);
   if (appliedMaterialVersion_ != model.materialVersion() || freeDofs_ != freeDofs)
     rescale(model, freeDofs);
+  chooseRotation(model);
   return factor_->valid;
+}
+
+void SystemPreconditioner::chooseRotation(const FemModel& model) {
+  rotateThisSolve_ = rotationPreferred_;
+  if (!factor_->stiffnessDominated) {
+    rotateThisSolve_ = false;
+    return;
+  }
+  if (++solvesSinceRotationProbe_ >= kRotationProbeEvery) {
+    rotateThisSolve_ = !rotationPreferred_;
+    solvesSinceRotationProbe_ = 0;
+  }
+  if (!rotateThisSolve_) return;
+  if (rotationsModel_ != &model) {
+    pointRotations_ = std::make_unique<ControlPointRotations>(model);
+    rotationsModel_ = &model;
+  }
+  pointRotations_->update(model.elastic().rotations());
+  ++stats_.rotatedSolves;
+}
+
+void SystemPreconditioner::countQuietSolves(const FemModel& model) {
+  const uint64_t version = model.materialVersion();
+  if (quietMaterialVersion_ != version) {
+    if (quietMaterialVersion_ != ~uint64_t(0)) quietSolves_ = 0;  // not the first materials
+    quietMaterialVersion_ = version;
+  }
+  ++quietSolves_;
+}
+
+void SystemPreconditioner::upgradeToRestStiffness(const FemModel& model,
+                                                  const std::vector<int>& freeDofs) {
+  if (upgrade_.valid()) {
+    if (++solvesSinceUpgradeStart_ < kUpgradeDelay) return;
+    std::unique_ptr<Factor> factor = upgrade_.get();
+    // Pins edited or the time step changed meanwhile: of no use.
+    if (factor && factor->valid && factor->freeDofs == freeDofs &&
+        std::equal(factor->scales, factor->scales + 3, factor_->scales)) {
+      adopt(std::move(factor));
+      ++stats_.backgroundFactorizations;
+    }
+    return;
+  }
+  // Static solves (no inertia) are a few Newton steps: over before such a factor would arrive.
+  // Without tricubic elements the stand-in is the elements' own stiffness already. Where the
+  // inertia dominates, the solves are not rotated, and the elements' own stiffness saves
+  // iterations only while the solid stays near its rest shape.
+  if (factor_->restStiffness || pending_.valid() || factor_->scales[0] == 0 ||
+      model.mesh().numTricubic() == 0 || !factor_->stiffnessDominated ||
+      freeDofs != factor_->freeDofs || quietSolves_ < kQuietSolves)
+    return;
+  const double* scales = factor_->scales;
+  auto request = std::make_shared<Request>(requestFor(model, scales[0], scales[1], scales[2], freeDofs));
+  request->restStiffness = true;
+  upgradeCancelled_ = std::make_shared<std::atomic<bool>>(false);
+  request->cancelled = upgradeCancelled_;
+  solvesSinceUpgradeStart_ = 0;
+  upgrade_ = std::async(std::launch::async, [request, method = method_] {
+    return factorRequest(*request, method);
+  });
 }
 
 void SystemPreconditioner::refactor(const FemModel& model) {
@@ -249,6 +334,12 @@ void SystemPreconditioner::factorNow(const FemModel& model, double a, double b, 
 void SystemPreconditioner::rescale(const FemModel& model, const std::vector<int>& freeDofs) {
   freeDofs_ = freeDofs;
   appliedMaterialVersion_ = model.materialVersion();
+  rotatedPoints_.clear();
+  for (size_t k = 0; k + 2 < freeDofs.size(); ++k)
+    if (freeDofs[k] % 3 == 0 && freeDofs[k + 2] == freeDofs[k] + 2) {
+      rotatedPoints_.emplace_back(Eigen::Index(k), uint32_t(freeDofs[k] / 3));
+      k += 2;
+    }
   const Factor& f = *factor_;
   mapped_ = freeDofs != f.freeDofs;
   const bool sameMaterials = model.materialVersion() == f.materialVersion;
@@ -291,6 +382,26 @@ void SystemPreconditioner::rescale(const FemModel& model, const std::vector<int>
 }
 
 void SystemPreconditioner::apply(const Eigen::VectorXd& r, Eigen::VectorXd& z) const {
+  if (!rotateThisSolve_ || !factor_ || !factor_->valid) {
+    solve(r, z);
+    return;
+  }
+  Eigen::VectorXd turned = r;
+  rotate(turned, true);
+  solve(turned, z);
+  rotate(z, false);
+}
+
+void SystemPreconditioner::rotate(Eigen::VectorXd& x, bool transposed) const {
+  const std::vector<Eigen::Matrix3d>& R = pointRotations_->rotations();
+  for (const auto& [k, point] : rotatedPoints_) {
+    const Eigen::Vector3d v = x.segment<3>(k);
+    if (transposed) x.segment<3>(k) = R[point].transpose() * v;
+    else x.segment<3>(k) = R[point] * v;
+  }
+}
+
+void SystemPreconditioner::solve(const Eigen::VectorXd& r, Eigen::VectorXd& z) const {
   if (!factor_ || !factor_->valid) {
     z = r;
     return;
@@ -315,6 +426,11 @@ void SystemPreconditioner::apply(const Eigen::VectorXd& r, Eigen::VectorXd& z) c
 
 void SystemPreconditioner::reportIterations(int iterations) {
   if (!factor_) return;
+  const int way = rotateThisSolve_ ? 1 : 0;
+  // A probe (a solve the way not preferred) that took fewer iterations switches the way.
+  if (rotateThisSolve_ != rotationPreferred_ && iterations < lastIterations_[1 - way])
+    rotationPreferred_ = rotateThisSolve_;
+  lastIterations_[way] = iterations;
   const bool fresh = inverseSqrtScale_.size() == 0;
   if (fresh) {
     if (freshIterations_ < 0 || iterations < freshIterations_) freshIterations_ = iterations;

@@ -10,13 +10,26 @@
 //    fresh one did, a new factor is made on a worker thread while the old one keeps serving, and
 //    adopted a fixed number of solves later (waiting if it is late): same inputs, same bits, in
 //    the window as in the CLI.
+//  - Each solve may turn the residual into the control points' frames first (r' = R^T r, then
+//    z = R S0^-1 r', R a rotation per point from the elements' co-rotation frames): exact for a
+//    solid turned rigidly, and close while it bends. Where it is not (a mass-dominated system
+//    whose neighbouring points turn apart, a collapse), now and then a solve is made the other
+//    way, and the way that took fewer CG iterations is kept.
+//  - Those factors use the cheap stand-in for the stiffness (linear_stiffness.h). Once the
+//    materials and pins have stayed put for a while (from the start on), a time-stepping solve
+//    also has a factor with the elements' own rest stiffness made on a worker, and adopts it
+//    a fixed, longer number of solves later: denser and slower to make, it saves CG iterations
+//    in every step after it.
 
+#include <atomic>
 #include <cstdint>
 #include <future>
+#include <limits>
 #include <memory>
 #include <vector>
 
 #include "fem/fem_model.h"
+#include "sim/control_point_rotations.h"
 #include "sim/sparse_cholesky.h"
 
 namespace sculpt {
@@ -25,6 +38,9 @@ struct PreconditionerStats {
   int factorizations = 0;      ///< numeric factorisations
   int backgroundFactorizations = 0;  ///< of these, made on the worker thread
   int rescalings = 0;          ///< material edits absorbed by rescaling the factor
+  int restStiffnessFactorizations = 0;  ///< of these, with the elements' own rest stiffness
+  int rotatedSolves = 0;       ///< solves made in the control points' rotated frames
+  bool restStiffness = false;  ///< the factor in use has the elements' own rest stiffness
   double lastFactorMs = 0;     ///< wall time of the last factorisation, assembly included
   long long factorNonZeros = 0;
 };
@@ -66,6 +82,18 @@ class SystemPreconditioner {
   std::unique_ptr<Factor> makeFactor(const FemModel& model, double a, double b, double c,
                                      const std::vector<int>& freeDofs);
   void adopt(std::unique_ptr<Factor> factor);
+  // Counts the solves at the model's current materials (a change starts the count again).
+  void countQuietSolves(const FemModel& model);
+  // Starts the rest-stiffness factor on a worker when the time has come; adopts one whose
+  // time has come if it still fits the scales and the free coordinates.
+  void upgradeToRestStiffness(const FemModel& model, const std::vector<int>& freeDofs);
+  // Whether this solve turns the residual into the control points' frames (and their
+  // rotations, when it does).
+  void chooseRotation(const FemModel& model);
+  // z = D^-1/2 S0^-1 D^-1/2 r, without the rotations.
+  void solve(const Eigen::VectorXd& r, Eigen::VectorXd& z) const;
+  // x_p = R_p^T x_p (or R_p x_p) at every point whose three coordinates are free.
+  void rotate(Eigen::VectorXd& x, bool transposed) const;
   // A factor made and adopted on the spot.
   void factorNow(const FemModel& model, double a, double b, double c,
                  const std::vector<int>& freeDofs);
@@ -87,6 +115,21 @@ class SystemPreconditioner {
   int freshIterations_ = -1;
   bool drifted_ = false;
   std::future<std::unique_ptr<Factor>> pending_;
+  std::future<std::unique_ptr<Factor>> upgrade_;  // the rest-stiffness factor being made
+  std::shared_ptr<std::atomic<bool>> upgradeCancelled_;
+  int solvesSinceUpgradeStart_ = 0;
+  uint64_t quietMaterialVersion_ = ~uint64_t(0);
+  int quietSolves_ = kQuietSolves;  // the start counts as quiet
+  // The rotated solves: the points' rotations, the free-vector position of each point whose
+  // three coordinates are free, the way this solve goes and the way preferred, and the
+  // iterations each way took last.
+  std::unique_ptr<ControlPointRotations> pointRotations_;
+  const FemModel* rotationsModel_ = nullptr;
+  std::vector<std::pair<Eigen::Index, uint32_t>> rotatedPoints_;
+  bool rotateThisSolve_ = false, rotationPreferred_ = true;
+  int lastIterations_[2] = {std::numeric_limits<int>::max(), std::numeric_limits<int>::max()};
+  int solvesSinceRotationProbe_ = 0;
+
   struct FirstFactor {
     uint64_t materialVersion = 0;
     SparseMatrix stiffness;
@@ -100,6 +143,12 @@ class SystemPreconditioner {
   static constexpr int kDriftSlack = 4;
   // A factor started on the worker is adopted this many solves later.
   static constexpr int kDeterministicDelay = 8;
+  // The rest-stiffness factor: started after this many solves without a material or pin edit,
+  // adopted this many solves after it was started.
+  static constexpr int kQuietSolves = 30;
+  static constexpr int kUpgradeDelay = 20;
+  // Every this many solves, one goes the way not preferred.
+  static constexpr int kRotationProbeEvery = 16;
 };
 
 }  // namespace sculpt
