@@ -46,7 +46,7 @@ struct SystemPreconditioner::Request {
 namespace {
 using Clock = std::chrono::steady_clock;
 // The default bunny: 0.57 (rotated solves: 3 CG iterations instead of 5); the blocks, the head
-// and the bridge of docs/BENCHMARKS.md at K = 1 and 2: 0.10-0.19 (rotated solves took 1.3-2x
+// and the bridge of docs/BENCHMARKS.md at K = 1 and 2: 0.10-0.19 (rotated solves took 1.3-1.9x
 // the iterations).
 constexpr double kStiffnessShareForRotations = 1.0 / 3.0;
 }  // namespace
