@@ -249,6 +249,7 @@ bool SystemPreconditioner::update(const FemModel& model, double massScale, doubl
     // Pins or materials moved away from the factor: make a new one while this one serves.
     startBackground(model, massScale, dampingScale, stiffnessScale, freeDofs);
   }
+  ++solves_;
   countQuietSolves(model);
   upgradeToRestStiffness(model, freeDofs);
   if (appliedMaterialVersion_ != model.materialVersion() || freeDofs_ != freeDofs)
@@ -259,12 +260,16 @@ bool SystemPreconditioner::update(const FemModel& model, double massScale, doubl
 
 void SystemPreconditioner::chooseRotation(const FemModel& model) {
   rotateThisSolve_ = rotationPreferred_;
-  if (!factor_->stiffnessDominated) {
+  rotationProbe_ = false;
+  // Not on the first solve: the first step is what a user waits for before anything moves,
+  // and a solid starts near its rest frames.
+  if (!factor_->stiffnessDominated || solves_ < 2) {
     rotateThisSolve_ = false;
     return;
   }
   if (++solvesSinceRotationProbe_ >= kRotationProbeEvery) {
     rotateThisSolve_ = !rotationPreferred_;
+    rotationProbe_ = true;
     solvesSinceRotationProbe_ = 0;
   }
   if (!rotateThisSolve_) return;
@@ -302,12 +307,14 @@ void SystemPreconditioner::upgradeToRestStiffness(const FemModel& model,
   // Without tricubic elements the stand-in is the elements' own stiffness already. Where the
   // inertia dominates, the solves are not rotated, and the elements' own stiffness saves
   // iterations only while the solid stays near its rest shape.
-  if (factor_->restStiffness || pending_.valid() || factor_->scales[0] == 0 ||
+  // Nor is the first solve's step shared with it.
+  if (solves_ < 2 || factor_->restStiffness || pending_.valid() || factor_->scales[0] == 0 ||
       model.mesh().numTricubic() == 0 || !factor_->stiffnessDominated ||
       freeDofs != factor_->freeDofs || quietSolves_ < kQuietSolves)
     return;
   const double* scales = factor_->scales;
-  auto request = std::make_shared<Request>(requestFor(model, scales[0], scales[1], scales[2], freeDofs));
+  auto request =
+      std::make_shared<Request>(requestFor(model, scales[0], scales[1], scales[2], freeDofs));
   request->restStiffness = true;
   upgradeCancelled_ = std::make_shared<std::atomic<bool>>(false);
   request->cancelled = upgradeCancelled_;
@@ -428,7 +435,7 @@ void SystemPreconditioner::reportIterations(int iterations) {
   if (!factor_) return;
   const int way = rotateThisSolve_ ? 1 : 0;
   // A probe (a solve the way not preferred) that took fewer iterations switches the way.
-  if (rotateThisSolve_ != rotationPreferred_ && iterations < lastIterations_[1 - way])
+  if (rotationProbe_ && iterations < lastIterations_[1 - way])
     rotationPreferred_ = rotateThisSolve_;
   lastIterations_[way] = iterations;
   const bool fresh = inverseSqrtScale_.size() == 0;

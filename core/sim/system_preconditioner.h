@@ -120,13 +120,14 @@ class SystemPreconditioner {
   int solvesSinceUpgradeStart_ = 0;
   uint64_t quietMaterialVersion_ = ~uint64_t(0);
   int quietSolves_ = kQuietSolves;  // the start counts as quiet
+  int solves_ = 0;
   // The rotated solves: the points' rotations, the free-vector position of each point whose
   // three coordinates are free, the way this solve goes and the way preferred, and the
   // iterations each way took last.
   std::unique_ptr<ControlPointRotations> pointRotations_;
   const FemModel* rotationsModel_ = nullptr;
   std::vector<std::pair<Eigen::Index, uint32_t>> rotatedPoints_;
-  bool rotateThisSolve_ = false, rotationPreferred_ = true;
+  bool rotateThisSolve_ = false, rotationPreferred_ = true, rotationProbe_ = false;
   int lastIterations_[2] = {std::numeric_limits<int>::max(), std::numeric_limits<int>::max()};
   int solvesSinceRotationProbe_ = 0;
 

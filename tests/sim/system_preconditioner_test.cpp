@@ -228,10 +228,11 @@ TEST(SystemPreconditioner, ARigidlyTurnedSolidSolvesInAsFewIterationsAsOneAtRest
       v.row(i) = (Q * Eigen::Vector3d(0.01 * std::sin(s), 0.02 * std::cos(s), 0)).transpose();
     }
     simulator.setState(x, v);
-    for (int k = 0; k < 6; ++k) {
+    for (int k = 0; k < 7; ++k) {
       const StepReport report = simulator.step();
       ASSERT_TRUE(report.ok) << report.message;
-      iterations[turned].push_back(report.iterations);
+      // The first solve is never rotated.
+      if (k > 0) iterations[turned].push_back(report.iterations);
     }
     EXPECT_EQ(simulator.preconditionerStats().rotatedSolves, 6);
   }
