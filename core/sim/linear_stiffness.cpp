@@ -211,7 +211,8 @@ class TricubicStiffness {
     // relative to it (a zero comes out as rounding noise).
     const double scale = J[0].cwiseAbs().maxCoeff();
     std::array<double, 11> key;
-    for (int rc = 0; rc < 9; ++rc) key[size_t(rc)] = std::round(J[0](rc / 3, rc % 3) / scale * 0x1p30);
+    for (int rc = 0; rc < 9; ++rc)
+      key[size_t(rc)] = std::round(J[0](rc / 3, rc % 3) / scale * 0x1p30);
     key[9] = roundedTo30Bits(scale);
     key[10] = roundedTo30Bits(volume[0]);
     auto found = shared_.find(key);

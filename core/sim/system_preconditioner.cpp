@@ -141,7 +141,8 @@ std::unique_ptr<SystemPreconditioner::Factor> factorRequest(
       restrictToFree(systemMatrix(stiffness, request), request.freeDofs, &diagonalSum);
   const int n = int(restricted.rows());
   double stiffnessSum = 0;
-  for (int dof : request.freeDofs) stiffnessSum += request.scales[2] * factor->stiffnessDiagonal[dof];
+  for (int dof : request.freeDofs)
+    stiffnessSum += request.scales[2] * factor->stiffnessDiagonal[dof];
   factor->stiffnessDominated = stiffnessSum >= kStiffnessShareForRotations * diagonalSum;
 
   // Every point pinned: nothing to solve for, and CHOLMOD refuses an empty matrix.
@@ -303,11 +304,11 @@ void SystemPreconditioner::upgradeToRestStiffness(const FemModel& model,
     }
     return;
   }
-  // Static solves (no inertia) are a few Newton steps: over before such a factor would arrive.
-  // Without tricubic elements the stand-in is the elements' own stiffness already. Where the
-  // inertia dominates, the solves are not rotated, and the elements' own stiffness saves
-  // iterations only while the solid stays near its rest shape.
-  // Nor is the first solve's step shared with it.
+  // Not from the first solve: its step is what the window waits for. Static solves (no
+  // inertia) are a few Newton steps, over before such a factor would arrive. Without tricubic
+  // elements the stand-in is the elements' own stiffness already. Where the inertia dominates,
+  // the solves are not rotated, and the elements' own stiffness saves iterations only while the
+  // solid stays near its rest shape.
   if (solves_ < 2 || factor_->restStiffness || pending_.valid() || factor_->scales[0] == 0 ||
       model.mesh().numTricubic() == 0 || !factor_->stiffnessDominated ||
       freeDofs != factor_->freeDofs || quietSolves_ < kQuietSolves)

@@ -258,7 +258,8 @@ TEST(SystemPreconditioner, TheElementsOwnStiffnessIsAdoptedAfterAQuietStart) {
   // Measured: 4 iterations a step with the stand-in, 2 after the adoption.
   const auto before = std::max_element(iterations.begin(), iterations.begin() + 20);
   const auto after = std::max_element(iterations.begin() + 25, iterations.end());
-  std::printf("[ rest stiffness ] CG iterations: up to %d before, up to %d after\n", *before, *after);
+  std::printf("[ rest stiffness ] CG iterations: up to %d before, up to %d after\n", *before,
+              *after);
   EXPECT_LT(*after, *before);
 }
 
