@@ -18,8 +18,8 @@
 //  - Those factors use the cheap stand-in for the stiffness (linear_stiffness.h). Once the
 //    materials and pins have stayed put for a while (from the start on), a time-stepping solve
 //    also has a factor with the elements' own rest stiffness made on a worker, and adopts it
-//    a fixed, longer number of solves later: denser and slower to make, it saves CG iterations
-//    in every step after it.
+//    a longer number of solves later, fixed by the model's size: denser and slower to make, it
+//    saves CG iterations in every step after it.
 
 #include <atomic>
 #include <cstdint>
@@ -117,7 +117,7 @@ class SystemPreconditioner {
   std::future<std::unique_ptr<Factor>> pending_;
   std::future<std::unique_ptr<Factor>> upgrade_;  // the rest-stiffness factor being made
   std::shared_ptr<std::atomic<bool>> upgradeCancelled_;
-  int solvesSinceUpgradeStart_ = 0;
+  int solvesSinceUpgradeStart_ = 0, upgradeDelay_ = kUpgradeDelayLeast;
   uint64_t quietMaterialVersion_ = ~uint64_t(0);
   int quietSolves_ = kQuietSolves;  // the start counts as quiet
   int solves_ = 0;
@@ -145,9 +145,9 @@ class SystemPreconditioner {
   // A factor started on the worker is adopted this many solves later.
   static constexpr int kDeterministicDelay = 8;
   // The rest-stiffness factor: started after this many solves without a material or pin edit,
-  // adopted this many solves after it was started.
+  // adopted at least this many solves after it was started (more for a larger model).
   static constexpr int kQuietSolves = 30;
-  static constexpr int kUpgradeDelay = 20;
+  static constexpr int kUpgradeDelayLeast = 20;
   // Every this many solves, one goes the way not preferred.
   static constexpr int kRotationProbeEvery = 16;
 };

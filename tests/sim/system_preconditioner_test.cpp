@@ -244,8 +244,9 @@ TEST(SystemPreconditioner, TheElementsOwnStiffnessIsAdoptedAfterAQuietStart) {
   ASSERT_TRUE(model);
   Simulator simulator(*model);
   pinTheBottomUnderGravity(simulator);
+  // 1,728 elements: adopted 43 solves after the second.
   std::vector<int> iterations;
-  for (int k = 0; k < 40; ++k) {
+  for (int k = 0; k < 60; ++k) {
     const StepReport report = simulator.step();
     ASSERT_TRUE(report.ok) << report.message;
     EXPECT_LE(report.residual, simulator.settings().implicitTolerance);
@@ -257,7 +258,7 @@ TEST(SystemPreconditioner, TheElementsOwnStiffnessIsAdoptedAfterAQuietStart) {
   EXPECT_EQ(stats.factorizations, 2);
   // Measured: 4 iterations a step with the stand-in, 2 after the adoption.
   const auto before = std::max_element(iterations.begin(), iterations.begin() + 20);
-  const auto after = std::max_element(iterations.begin() + 25, iterations.end());
+  const auto after = std::max_element(iterations.begin() + 46, iterations.end());
   std::printf("[ rest stiffness ] CG iterations: up to %d before, up to %d after\n", *before,
               *after);
   EXPECT_LT(*after, *before);
@@ -281,7 +282,7 @@ TEST(SystemPreconditioner, RotatedSolvesAndTheUpgradeGiveTheSameBitsTwice) {
     auto model = stiffBlock3();
     Simulator simulator(*model);
     pinTheBottomUnderGravity(simulator);
-    for (int i = 0; i < 40; ++i) simulator.step();
+    for (int i = 0; i < 50; ++i) simulator.step();
     EXPECT_EQ(simulator.preconditionerStats().restStiffnessFactorizations, 1);
     return Points(simulator.positions());
   };
