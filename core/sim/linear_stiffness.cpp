@@ -342,16 +342,19 @@ SparseMatrix reducedLinearStiffness(const FemMesh& mesh, std::span<const LamePar
 }
 
 SparseMatrix reducedRestStiffness(const FemMesh& mesh, std::span<const LameParameters> lame,
-                                  const SparseMatrix& A) {
+                                  const SparseMatrix& A, const std::atomic<bool>* stop) {
   NodeBlocks K = elementNodePattern(mesh);
   TricubicStiffness tricubic(mesh, lame);
   std::vector<uint32_t> where(mesh.numNodes());
-  for (uint32_t e = 0; e < mesh.numTricubic(); ++e)
+  for (uint32_t e = 0; e < mesh.numTricubic(); ++e) {
+    if (stop && e % 64 == 0 && *stop) return {};
     addElementMatrix(K, mesh.tricubicNodes[e], tricubic(e),
                      [](int a, int c) { return c * 64 + a; }, where);
+  }
   for (uint32_t e = mesh.numTricubic(); e < mesh.numElements(); ++e)
     addElementMatrix(K, elementNodes(mesh, e), linearElementStiffness(mesh, lame, e),
                      [](int a, int c) { return 3 * a + c; }, where);
+  if (stop && *stop) return {};
   return reduceNodeBlocks(std::move(K), A);
 }
 

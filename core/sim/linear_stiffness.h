@@ -7,6 +7,7 @@
 // computed on 3x3 node blocks.
 
 #include <array>
+#include <atomic>
 #include <cstdint>
 #include <span>
 
@@ -27,8 +28,9 @@ SparseMatrix reducedLinearStiffness(const FemMesh& mesh, std::span<const LamePar
 /// Hessian product gives at rotation I), each linear one as above. It couples each control point
 /// with 7^3 others inside a regular lattice at K = 1 where the stand-in couples 5^3, so its
 /// factor is denser and slower to make; preconditioned with it, CG takes fewer iterations.
+/// Once `stop` (when given) is set, returns an empty matrix soon.
 SparseMatrix reducedRestStiffness(const FemMesh& mesh, std::span<const LameParameters> lame,
-                                  const SparseMatrix& A);
+                                  const SparseMatrix& A, const std::atomic<bool>* stop = nullptr);
 
 /// The 8 nodes of element e's stand-in: a trilinear or pyramid element's own, a tricubic
 /// element's cell corners (block [1,2]^3 of its 4^3 nodes), in trilinear order.

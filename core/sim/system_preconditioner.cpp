@@ -40,7 +40,7 @@ struct SystemPreconditioner::Request {
   std::optional<SparseMatrix> stiffness;  // K~lin, when assembled already
   std::optional<Eigen::VectorXd> modulus;  // its controlPointModulus
   bool restStiffness = false;  // the elements' own rest stiffness instead of K~lin
-  std::shared_ptr<const std::atomic<bool>> cancelled;  // set: stop after the stiffness
+  std::shared_ptr<const std::atomic<bool>> cancelled;  // set: give up (no factor)
 };
 
 namespace {
@@ -126,11 +126,13 @@ std::unique_ptr<SystemPreconditioner::Factor> factorRequest(
   const Clock::time_point start = Clock::now();
   auto factor = analysed ? std::move(analysed)
                          : std::make_unique<SystemPreconditioner::Factor>(method);
+  const std::atomic<bool>* cancelled = request.cancelled.get();
+  const FemMesh& mesh = *request.mesh;
   const SparseMatrix stiffness =
       request.stiffness       ? *request.stiffness
-      : request.restStiffness ? reducedRestStiffness(*request.mesh, request.lame, *request.A)
-                              : reducedLinearStiffness(*request.mesh, request.lame, *request.A);
-  if (request.cancelled && *request.cancelled) return nullptr;
+      : request.restStiffness ? reducedRestStiffness(mesh, request.lame, *request.A, cancelled)
+                              : reducedLinearStiffness(mesh, request.lame, *request.A);
+  if (cancelled && *cancelled) return nullptr;
   factor->restStiffness = request.restStiffness;
   factor->stiffnessDiagonal = stiffness.diagonal();
   factor->modulus = request.modulus

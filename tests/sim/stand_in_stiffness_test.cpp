@@ -7,6 +7,7 @@
 
 #include <Eigen/Dense>
 #include <Eigen/Eigenvalues>
+#include <atomic>
 #include <cstdio>
 #include <filesystem>
 
@@ -101,6 +102,17 @@ TEST(RestStiffness, IsTheElementsStiffnessReducedToTheControlPoints) {
               mixedDifference, blockDifference);
   EXPECT_LT(mixedDifference, 1e-12);
   EXPECT_LT(blockDifference, 1e-12);
+}
+
+TEST(RestStiffness, GivesUpWhenStopped) {
+  // A simulator that ends while the factor is made (a short command-line run) stops its worker
+  // instead of waiting for it.
+  auto block = test::buildModel(test::block3(), 1, false);
+  ASSERT_TRUE(block);
+  const FemMesh& mesh = block->mesh();
+  const std::atomic<bool> stop{true}, go{false};
+  EXPECT_EQ(reducedRestStiffness(mesh, mesh.gaussLame, block->stencilMatrix(), &stop).size(), 0);
+  EXPECT_GT(reducedRestStiffness(mesh, mesh.gaussLame, block->stencilMatrix(), &go).nonZeros(), 0);
 }
 
 }  // namespace
