@@ -12,9 +12,10 @@
 //    the window as in the CLI.
 //  - Each solve may turn the residual into the control points' frames first (r' = R^T r, then
 //    z = R S0^-1 r', R a rotation per point from the elements' co-rotation frames): exact for a
-//    solid turned rigidly, and close while it bends. Where it is not (a mass-dominated system
-//    whose neighbouring points turn apart, a collapse), now and then a solve is made the other
-//    way, and the way that took fewer CG iterations is kept.
+//    solid turned rigidly, and close while it bends. Tried only where the stiffness makes up a
+//    third of S's diagonal or more (turning the inertia with the points costs more than it
+//    saves where the inertia dominates); there, now and then a solve is made the other way, and
+//    the way that took fewer CG iterations is kept.
 //  - Those factors use the cheap stand-in for the stiffness (linear_stiffness.h). Once the
 //    materials and pins have stayed put for a while (from the start on), a time-stepping solve
 //    also has a factor with the elements' own rest stiffness made on a worker, and adopts it
