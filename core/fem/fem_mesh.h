@@ -11,6 +11,7 @@
 #include <array>
 #include <cstdint>
 #include <optional>
+#include <span>
 #include <string>
 #include <vector>
 
@@ -81,6 +82,11 @@ struct FemMesh {
   uint32_t numGaussPoints() const { return static_cast<uint32_t>(gaussVolume.size()); }
   uint32_t gaussBegin(uint32_t element) const;
   uint32_t gaussCount(uint32_t element) const;
+  /// The element's nodes: its 64 tricubic block nodes, or its 8 linear ones.
+  std::span<const uint32_t> elementNodes(uint32_t element) const {
+    if (element < numTricubic()) return tricubicNodes[element];
+    return linearNodes[element - numTricubic()];
+  }
   ElementCounts counts() const;
   double restVolume() const;
 };

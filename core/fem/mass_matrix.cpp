@@ -134,10 +134,6 @@ Columns nodeMatrixColumns(const FemMesh& mesh, std::span<const double> weights,
   const Eigen::MatrixXd hexN = linearShapeTable(false);
   const Eigen::MatrixXd pyramidN = linearShapeTable(true);
   const uint32_t numElements = mesh.numElements(), numNodes = mesh.numNodes();
-  const auto elementNodes = [&](uint32_t e) -> std::span<const uint32_t> {
-    if (e < mesh.numTricubic()) return mesh.tricubicNodes[e];
-    return mesh.linearNodes[e - mesh.numTricubic()];
-  };
   // An element left out, or where the weights vanish, adds nothing.
   std::vector<uint8_t> empty(numElements, 1);
   for (uint32_t e = 0; e < numElements; ++e) {
@@ -150,14 +146,14 @@ Columns nodeMatrixColumns(const FemMesh& mesh, std::span<const double> weights,
   std::vector<uint32_t> slotsBegin(numNodes + 1, 0);
   for (uint32_t e = 0; e < numElements; ++e)
     if (!empty[e])
-      for (uint32_t j : elementNodes(e)) ++slotsBegin[j + 1];
+      for (uint32_t j : mesh.elementNodes(e)) ++slotsBegin[j + 1];
   for (uint32_t j = 0; j < numNodes; ++j) slotsBegin[j + 1] += slotsBegin[j];
   std::vector<std::pair<uint32_t, uint32_t>> slots(slotsBegin.back());
   {
     std::vector<uint32_t> cursor(slotsBegin.begin(), slotsBegin.end() - 1);
     for (uint32_t e = 0; e < numElements; ++e) {
       if (empty[e]) continue;
-      const std::span<const uint32_t> ids = elementNodes(e);
+      const std::span<const uint32_t> ids = mesh.elementNodes(e);
       for (uint32_t b = 0; b < ids.size(); ++b) slots[cursor[ids[b]]++] = {e, b};
     }
   }
@@ -166,7 +162,7 @@ Columns nodeMatrixColumns(const FemMesh& mesh, std::span<const double> weights,
     for (uint32_t s = slotsBegin[j]; s < slotsBegin[j + 1]; ++s) {
       const auto [e, b] = slots[s];
       const double* w = weights.data() + mesh.gaussBegin(e);
-      const std::span<const uint32_t> ids = elementNodes(e);
+      const std::span<const uint32_t> ids = mesh.elementNodes(e);
       if (e < mesh.numTricubic()) {
         tricubic.column(w, int(b), column);
       } else {

@@ -133,18 +133,13 @@ SparseMatrix reduceNodeBlocks(NodeBlocks K, const SparseMatrix& A) {
   return S;
 }
 
-std::span<const uint32_t> elementNodes(const FemMesh& mesh, uint32_t e) {
-  if (e < mesh.numTricubic()) return mesh.tricubicNodes[e];
-  return mesh.linearNodes[e - mesh.numTricubic()];
-}
-
 // The pattern of the elements' own stiffness, zero: each node's row holds, in increasing order,
 // every node it shares an element with.
 NodeBlocks elementNodePattern(const FemMesh& mesh) {
   const uint32_t numNodes = mesh.numNodes();
   std::vector<std::vector<uint32_t>> elementsOf(numNodes);
   for (uint32_t e = 0; e < mesh.numElements(); ++e)
-    for (uint32_t n : elementNodes(mesh, e))
+    for (uint32_t n : mesh.elementNodes(e))
       if (elementsOf[n].empty() || elementsOf[n].back() != e) elementsOf[n].push_back(e);
   NodeBlocks K{std::vector<std::vector<uint32_t>>(numNodes),
                std::vector<std::vector<Eigen::Matrix3d>>(numNodes)};
@@ -152,7 +147,7 @@ NodeBlocks elementNodePattern(const FemMesh& mesh) {
   for (uint32_t n = 0; n < numNodes; ++n) {
     std::vector<uint32_t>& row = K.neighbours[n];
     for (uint32_t e : elementsOf[n])
-      for (uint32_t m : elementNodes(mesh, e))
+      for (uint32_t m : mesh.elementNodes(e))
         if (seenBy[m] != n) {
           seenBy[m] = n;
           row.push_back(m);
@@ -352,7 +347,7 @@ SparseMatrix reducedRestStiffness(const FemMesh& mesh, std::span<const LameParam
                      [](int a, int c) { return c * 64 + a; }, where);
   }
   for (uint32_t e = mesh.numTricubic(); e < mesh.numElements(); ++e)
-    addElementMatrix(K, elementNodes(mesh, e), linearElementStiffness(mesh, lame, e),
+    addElementMatrix(K, mesh.elementNodes(e), linearElementStiffness(mesh, lame, e),
                      [](int a, int c) { return 3 * a + c; }, where);
   if (stop && *stop) return {};
   return reduceNodeBlocks(std::move(K), A);

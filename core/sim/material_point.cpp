@@ -121,10 +121,7 @@ MaterialPointLocator::MaterialPointLocator(const FemMesh& mesh) : mesh_(mesh) {
       box.lo = box.lo.cwiseMin(X);
       box.hi = box.hi.cwiseMax(X);
     };
-    if (e < mesh.numTricubic())
-      for (uint32_t node : mesh.tricubicNodes[e]) add(node);
-    else
-      for (uint32_t node : mesh.linearNodes[e - mesh.numTricubic()]) add(node);
+    for (uint32_t node : mesh.elementNodes(e)) add(node);
     boxes_[e] = box;
   }
   Eigen::Vector3d allLo = boxes_[0].lo, allHi = boxes_[0].hi;
