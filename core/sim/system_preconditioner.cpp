@@ -43,6 +43,32 @@ struct SystemPreconditioner::Request {
   std::shared_ptr<const std::atomic<bool>> cancelled;  // set: give up (no factor)
 };
 
+// Taken a fixed number of solves after its start (waiting if it is late), never when it happens
+// to be ready: the results must not depend on timing. Dropped or destroyed, it is told to stop.
+class SystemPreconditioner::WorkerFactor {
+ public:
+  WorkerFactor(Request request, SparseCholesky::Method method, int delay);
+  ~WorkerFactor() { drop(); }
+  WorkerFactor(const WorkerFactor&) = delete;
+  WorkerFactor& operator=(const WorkerFactor&) = delete;
+  bool running() const { return future_.valid(); }
+  // Counts this solve; the factor when its turn has come (null before, and once taken).
+  std::unique_ptr<Factor> takeWhenDue() {
+    if (!running() || ++solvesSinceStart_ < delay_) return nullptr;
+    return future_.get();
+  }
+  void drop() {
+    *cancelled_ = true;
+    if (running()) future_.wait();
+    future_ = {};
+  }
+
+ private:
+  std::shared_ptr<std::atomic<bool>> cancelled_ = std::make_shared<std::atomic<bool>>(false);
+  std::future<std::unique_ptr<Factor>> future_;
+  int solvesSinceStart_ = 0, delay_;
+};
+
 namespace {
 using Clock = std::chrono::steady_clock;
 // The default bunny: 0.57 (rotated solves: 3 CG iterations instead of 5); the blocks, the head
@@ -54,9 +80,8 @@ constexpr double kStiffnessShareForRotations = 1.0 / 3.0;
 SystemPreconditioner::SystemPreconditioner(SparseCholesky::Method method) : method_(method) {}
 
 SystemPreconditioner::~SystemPreconditioner() {
-  if (upgradeCancelled_) *upgradeCancelled_ = true;
-  if (upgrade_.valid()) upgrade_.wait();
-  if (pending_.valid()) pending_.wait();
+  upgrade_.reset();
+  pending_.reset();
   if (firstFactor_.valid()) firstFactor_.wait();
 }
 
@@ -218,20 +243,29 @@ void SystemPreconditioner::adopt(std::unique_ptr<Factor> factor) {
   appliedMaterialVersion_ = ~uint64_t(0);  // the mapping and scaling are redone
 }
 
-void SystemPreconditioner::startBackground(const FemModel& model, double a, double b, double c,
-                                           const std::vector<int>& freeDofs) {
-  if (pending_.valid()) return;
-  solvesSinceStart_ = 0;
-  auto request = std::make_shared<Request>(requestFor(model, a, b, c, freeDofs));
-  const SparseCholesky::Method method = method_;
-  pending_ = std::async(std::launch::async,
-                        [request, method] { return factorRequest(*request, method); });
+SystemPreconditioner::WorkerFactor::WorkerFactor(Request request, SparseCholesky::Method method,
+                                                 int delay)
+    : delay_(delay) {
+  request.cancelled = cancelled_;
+  future_ = std::async(std::launch::async, [request = std::move(request), method] {
+    return factorRequest(request, method);
+  });
 }
 
-void SystemPreconditioner::adoptBackground() {
-  std::unique_ptr<Factor> factor = pending_.get();
-  // A factor made for another time step is of no use (sub-steps refactor on the spot).
-  if (factor_ && !std::equal(factor->scales, factor->scales + 3, factor_->scales)) return;
+void SystemPreconditioner::startBackground(const FemModel& model, double a, double b, double c,
+                                           const std::vector<int>& freeDofs) {
+  if (pending_ && pending_->running()) return;
+  pending_ = std::make_unique<WorkerFactor>(requestFor(model, a, b, c, freeDofs), method_,
+                                            kDeterministicDelay);
+}
+
+void SystemPreconditioner::adoptFromWorker(std::unique_ptr<Factor> factor,
+                                           const std::vector<int>& freeDofs) {
+  // A factor made for another time step is of no use (sub-steps refactor on the spot); nor is a
+  // rest-stiffness factor that failed, or one made for pins edited since.
+  if (!factor || (factor_ && !std::equal(factor->scales, factor->scales + 3, factor_->scales)))
+    return;
+  if (factor->restStiffness && (!factor->valid || factor->freeDofs != freeDofs)) return;
   adopt(std::move(factor));
   ++stats_.backgroundFactorizations;
 }
@@ -241,12 +275,13 @@ bool SystemPreconditioner::update(const FemModel& model, double massScale, doubl
   if (!std::is_sorted(freeDofs.begin(), freeDofs.end()))
     throw std::invalid_argument("SystemPreconditioner: free coordinates must be increasing");
   const double scales[3] = {massScale, dampingScale, stiffnessScale};
-  // A factor from the worker is taken a fixed number of solves after it was started (waiting
-  // if it is late), not when it happens to be ready: the results must not depend on timing.
-  if (pending_.valid() && ++solvesSinceStart_ >= kDeterministicDelay) adoptBackground();
+  if (pending_)
+    if (std::unique_ptr<Factor> factor = pending_->takeWhenDue())
+      adoptFromWorker(std::move(factor), freeDofs);
+  const bool pending = pending_ && pending_->running();
   if (!factor_ || !std::equal(scales, scales + 3, factor_->scales)) {
     factorNow(model, massScale, dampingScale, stiffnessScale, freeDofs);
-  } else if (!pending_.valid() &&
+  } else if (!pending &&
              (freeDofs != factor_->freeDofs ||
               (drifted_ && model.materialVersion() != factor_->materialVersion))) {
     // Pins or materials moved away from the factor: make a new one while this one serves.
@@ -295,15 +330,8 @@ void SystemPreconditioner::countQuietSolves(const FemModel& model) {
 
 void SystemPreconditioner::upgradeToRestStiffness(const FemModel& model,
                                                   const std::vector<int>& freeDofs) {
-  if (upgrade_.valid()) {
-    if (++solvesSinceUpgradeStart_ < upgradeDelay_) return;
-    std::unique_ptr<Factor> factor = upgrade_.get();
-    // Pins edited or the time step changed meanwhile: of no use.
-    if (factor && factor->valid && factor->freeDofs == freeDofs &&
-        std::equal(factor->scales, factor->scales + 3, factor_->scales)) {
-      adopt(std::move(factor));
-      ++stats_.backgroundFactorizations;
-    }
+  if (upgrade_ && upgrade_->running()) {
+    adoptFromWorker(upgrade_->takeWhenDue(), freeDofs);
     return;
   }
   // Not from the first solve: its step is what the window waits for. Static solves (no
@@ -311,24 +339,19 @@ void SystemPreconditioner::upgradeToRestStiffness(const FemModel& model,
   // elements the stand-in is the elements' own stiffness already. Where the inertia dominates,
   // the solves are not rotated, and the elements' own stiffness saves iterations only while the
   // solid stays near its rest shape.
-  if (solves_ < 2 || factor_->restStiffness || pending_.valid() || factor_->scales[0] == 0 ||
+  if (solves_ < 2 || factor_->restStiffness || (pending_ && pending_->running()) ||
+      factor_->scales[0] == 0 ||
       model.mesh().numTricubic() == 0 || !factor_->stiffnessDominated ||
       freeDofs != factor_->freeDofs || quietSolves_ < kQuietSolves)
     return;
   const double* scales = factor_->scales;
-  auto request =
-      std::make_shared<Request>(requestFor(model, scales[0], scales[1], scales[2], freeDofs));
-  request->restStiffness = true;
-  upgradeCancelled_ = std::make_shared<std::atomic<bool>>(false);
-  request->cancelled = upgradeCancelled_;
-  solvesSinceUpgradeStart_ = 0;
+  Request request = requestFor(model, scales[0], scales[1], scales[2], freeDofs);
+  request.restStiffness = true;
   // Making it costs about 0.14 ms of a core per element (the bunny's 2,968: 0.4 s). In the
   // window, at 60 steps a second beside the drawing, the worker gets about half a core: adopted
   // 20 solves on, the window's step waited 75-244 ms for it.
-  upgradeDelay_ = std::max(kUpgradeDelayLeast, int(model.mesh().numElements() / 40));
-  upgrade_ = std::async(std::launch::async, [request, method = method_] {
-    return factorRequest(*request, method);
-  });
+  const int delay = std::max(kUpgradeDelayLeast, int(model.mesh().numElements() / 40));
+  upgrade_ = std::make_unique<WorkerFactor>(std::move(request), method_, delay);
 }
 
 void SystemPreconditioner::refactor(const FemModel& model) {
@@ -340,20 +363,21 @@ void SystemPreconditioner::refactor(const FemModel& model) {
 
 void SystemPreconditioner::factorNow(const FemModel& model, double a, double b, double c,
                                      const std::vector<int>& freeDofs) {
-  if (pending_.valid()) pending_.wait();  // a factor on the worker is dropped
-  pending_ = {};
+  pending_.reset();  // a factor on the worker is dropped
   adopt(makeFactor(model, a, b, c, freeDofs));
 }
 
 void SystemPreconditioner::rescale(const FemModel& model, const std::vector<int>& freeDofs) {
+  if (freeDofs != freeDofs_) {  // not at every material edit
+    rotatedPoints_.clear();
+    for (size_t k = 0; k + 2 < freeDofs.size(); ++k)
+      if (freeDofs[k] % 3 == 0 && freeDofs[k + 2] == freeDofs[k] + 2) {
+        rotatedPoints_.emplace_back(Eigen::Index(k), uint32_t(freeDofs[k] / 3));
+        k += 2;
+      }
+  }
   freeDofs_ = freeDofs;
   appliedMaterialVersion_ = model.materialVersion();
-  rotatedPoints_.clear();
-  for (size_t k = 0; k + 2 < freeDofs.size(); ++k)
-    if (freeDofs[k] % 3 == 0 && freeDofs[k + 2] == freeDofs[k] + 2) {
-      rotatedPoints_.emplace_back(Eigen::Index(k), uint32_t(freeDofs[k] / 3));
-      k += 2;
-    }
   const Factor& f = *factor_;
   mapped_ = freeDofs != f.freeDofs;
   const bool sameMaterials = model.materialVersion() == f.materialVersion;

@@ -22,7 +22,6 @@
 //    a longer number of solves later, fixed by the model's size: denser and slower to make, it
 //    saves CG iterations in every step after it.
 
-#include <atomic>
 #include <cstdint>
 #include <future>
 #include <limits>
@@ -78,6 +77,8 @@ class SystemPreconditioner {
   /// One factor and what it was made for, and what making one needs (copied from the model).
   struct Factor;
   struct Request;
+  /// A factor being made on a worker thread, and when its turn comes.
+  class WorkerFactor;
 
  private:
   std::unique_ptr<Factor> makeFactor(const FemModel& model, double a, double b, double c,
@@ -101,7 +102,8 @@ class SystemPreconditioner {
   void rescale(const FemModel& model, const std::vector<int>& freeDofs);
   void startBackground(const FemModel& model, double a, double b, double c,
                        const std::vector<int>& freeDofs);
-  void adoptBackground();
+  // Adopts a factor from the worker, unless it is of no use any more.
+  void adoptFromWorker(std::unique_ptr<Factor> factor, const std::vector<int>& freeDofs);
 
   SparseCholesky::Method method_;
   std::unique_ptr<Factor> factor_;
@@ -115,10 +117,8 @@ class SystemPreconditioner {
   // Drift: the fewest iterations a solve took since the last factorisation.
   int freshIterations_ = -1;
   bool drifted_ = false;
-  std::future<std::unique_ptr<Factor>> pending_;
-  std::future<std::unique_ptr<Factor>> upgrade_;  // the rest-stiffness factor being made
-  std::shared_ptr<std::atomic<bool>> upgradeCancelled_;
-  int solvesSinceUpgradeStart_ = 0, upgradeDelay_ = kUpgradeDelayLeast;
+  // After pin edits or drift (the stand-in), and the rest-stiffness factor.
+  std::unique_ptr<WorkerFactor> pending_, upgrade_;
   uint64_t quietMaterialVersion_ = ~uint64_t(0);
   int quietSolves_ = kQuietSolves;  // the start counts as quiet
   int solves_ = 0;
@@ -139,7 +139,6 @@ class SystemPreconditioner {
     std::unique_ptr<Factor> analysed;  // ordered and analysed, not yet factored
   };
   std::future<FirstFactor> firstFactor_;  // prepareFirstFactor's work
-  int solvesSinceStart_ = 0;
   PreconditionerStats stats_;
   static constexpr double kDriftFactor = 1.5;
   static constexpr int kDriftSlack = 4;
