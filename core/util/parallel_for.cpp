@@ -20,43 +20,78 @@ namespace {
 // of a sleeping thread costs tens of microseconds. The spin is bounded in time, so an idle
 // pool sleeps. With more workers than hardware threads (SCULPT_THREADS) nobody spins: a
 // spinning thread would take the core from one with work.
+//
+// A loop's chunks are claimed, not assigned: the caller and the helpers take the next
+// unclaimed one until none is left, and the caller waits only for chunks that were claimed.
+// When another thread holds a core (a factor made on a worker, the window's drawing), a helper
+// that has not been scheduled yet costs nothing: the caller runs its chunk. The chunks and the
+// index each is called with do not change, so neither do the results.
 class WorkerPool {
  public:
   explicit WorkerPool(unsigned helpers)
       : spin_(helpers + 1 <= std::max(1u, std::thread::hardware_concurrency())) {
-    for (unsigned k = 0; k < helpers; ++k) threads_.emplace_back([this, k] { loop(k + 1); });
+    for (unsigned k = 0; k < helpers; ++k) threads_.emplace_back([this] { loop(); });
   }
   ~WorkerPool() {
     {
       std::lock_guard lock(mutex_);
       stopping_ = true;
-      generation_.fetch_add(1, std::memory_order_release);
+      claims_.store(pack(job_ + 1, 0, 0), std::memory_order_release);
     }
     wake_.notify_all();
     for (auto& t : threads_) t.join();
   }
 
-  // Runs task(worker) on workers 1..count-1 of the pool and 0 on the caller; returns when all
-  // are done. Calls from several threads at once are serialised.
+  // Runs task(k) once for every k in [0, count) on the caller and the helpers; returns when all
+  // have ended. Calls from several threads at once are serialised.
   void run(unsigned count, const std::function<void(unsigned)>& task) {
     std::lock_guard serial(runMutex_);
+    uint32_t job;
     {
       std::lock_guard lock(mutex_);
       task_ = &task;
-      active_ = count - 1;
-      pending_.store(count - 1, std::memory_order_relaxed);
-      generation_.fetch_add(1, std::memory_order_release);
+      ended_.store(0, std::memory_order_relaxed);
+      job = ++job_;
+      claims_.store(pack(job, 0, count), std::memory_order_release);
     }
     wake_.notify_all();
-    task(0);
-    if (spinUntil([this] { return pending_.load(std::memory_order_acquire) == 0; })) return;
+    runClaimedChunks(job);
+    const auto allEnded = [&] { return ended_.load(std::memory_order_acquire) == count; };
+    if (spinUntil(allEnded)) return;
     std::unique_lock lock(mutex_);
-    done_.wait(lock, [this] { return pending_.load(std::memory_order_acquire) == 0; });
+    done_.wait(lock, allEnded);
   }
 
   unsigned size() const { return static_cast<unsigned>(threads_.size()) + 1; }
 
  private:
+  // One word holds the job, its next unclaimed chunk and its chunk count, so that a helper
+  // that wakes late cannot claim a chunk of a job that has ended.
+  static uint64_t pack(uint32_t job, uint32_t next, uint32_t count) {
+    return uint64_t(job) << 32 | uint64_t(next) << 16 | count;
+  }
+  static uint32_t jobOf(uint64_t word) { return uint32_t(word >> 32); }
+  static uint32_t nextOf(uint64_t word) { return uint32_t(word >> 16) & 0xffffu; }
+  static uint32_t countOf(uint64_t word) { return uint32_t(word) & 0xffffu; }
+
+  // Claims and runs chunks of `job` until none is left.
+  void runClaimedChunks(uint32_t job) {
+    for (;;) {
+      uint64_t word = claims_.load(std::memory_order_acquire);
+      do {
+        if (jobOf(word) != job || nextOf(word) >= countOf(word)) return;
+      } while (!claims_.compare_exchange_weak(word, word + (uint64_t(1) << 16),
+                                              std::memory_order_acq_rel,
+                                              std::memory_order_acquire));
+      // The task stays valid while a claimed chunk has not ended: run() waits for it.
+      (*task_)(nextOf(word));
+      if (ended_.fetch_add(1, std::memory_order_acq_rel) + 1 == countOf(word)) {
+        std::lock_guard lock(mutex_);
+        done_.notify_one();
+      }
+    }
+  }
+
   // Polls `ready` for up to kSpin; true as soon as it holds.
   template <class Ready>
   bool spinUntil(const Ready& ready) const {
@@ -77,26 +112,20 @@ class WorkerPool {
 #endif
   }
 
-  void loop(unsigned worker) {
-    uint64_t seen = 0;
+  void loop() {
+    uint32_t seen = 0;
     for (;;) {
-      spinUntil([&] { return generation_.load(std::memory_order_acquire) != seen; });
-      const std::function<void(unsigned)>* task = nullptr;
+      const auto newJob = [&] {
+        return jobOf(claims_.load(std::memory_order_acquire)) != seen;
+      };
+      spinUntil(newJob);
       {
-        // The generation, the task and the worker count are read together under the lock
-        // that publishes them.
         std::unique_lock lock(mutex_);
-        wake_.wait(lock, [&] { return generation_.load(std::memory_order_relaxed) != seen; });
-        seen = generation_.load(std::memory_order_relaxed);
+        wake_.wait(lock, newJob);
         if (stopping_) return;
-        if (worker > active_) continue;
-        task = task_;
+        seen = jobOf(claims_.load(std::memory_order_relaxed));
       }
-      (*task)(worker);
-      if (pending_.fetch_sub(1, std::memory_order_acq_rel) == 1) {
-        std::lock_guard lock(mutex_);
-        done_.notify_one();
-      }
+      runClaimedChunks(seen);
     }
   }
 
@@ -104,11 +133,12 @@ class WorkerPool {
   std::vector<std::thread> threads_;
   std::mutex mutex_, runMutex_;
   std::condition_variable wake_, done_;
-  const std::function<void(unsigned)>* task_ = nullptr;  // guarded by mutex_
-  unsigned active_ = 0;                                  // guarded by mutex_
+  const std::function<void(unsigned)>* task_ = nullptr;  // written under mutex_ before a job
+  uint32_t job_ = 0;                                     // guarded by mutex_
   bool stopping_ = false;                                // guarded by mutex_
-  std::atomic<unsigned> pending_{0};
-  std::atomic<uint64_t> generation_{0};  // written under mutex_, polled without it
+  // The job, its next chunk and its chunk count; a job is published under mutex_.
+  std::atomic<uint64_t> claims_{0};
+  std::atomic<unsigned> ended_{0};  // chunks of the current job that have ended
 };
 
 WorkerPool& pool() {

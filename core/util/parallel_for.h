@@ -10,8 +10,10 @@ namespace sculpt {
 /// Number of worker threads used by parallelFor (hardware threads, at least 1).
 unsigned workerCount();
 
-/// Calls body(begin, end, worker) for disjoint contiguous chunks covering [0, n). Runs inline
-/// when n < minParallel. Chunk k is handled by worker k, so per-worker buffers may be indexed by it.
+/// Calls body(begin, end, worker) for disjoint contiguous chunks covering [0, n), one chunk per
+/// worker thread, `worker` being the chunk's index: per-worker buffers may be indexed by it. The
+/// chunks depend on n and workerCount() only; which thread runs which is not fixed (a thread
+/// that is free takes the next one). Runs inline when n < minParallel.
 /// An exception thrown by body (std::bad_alloc, say) is rethrown here once every chunk has
 /// ended; when several chunks throw, the lowest chunk's exception wins.
 void parallelChunks(uint32_t n, uint32_t minParallel,
