@@ -212,6 +212,12 @@ std::future<SceneController::PhysicsBuild> SceneController::startPhysics(
     PhysicsBuild build;
     build.physics = ScenePhysics::build(geometry, solid, job.settings, &progress, &build.stageMs,
                                         stencilsReady);
+    if (build.physics && threaded_) {
+      // The window's steps never wait for a factor made on a worker (simulator.h).
+      SimulationSettings simulation = build.physics->simulator().settings();
+      simulation.reproducible = false;
+      build.physics->simulator().setSettings(simulation);
+    }
     return build;
   });
 }

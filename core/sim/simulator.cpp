@@ -45,6 +45,7 @@ Simulator::Simulator(FemModel& model, SimulationSettings settings)
       elastic_(std::make_unique<ElasticForm>(model, settings.corotated)),
       preconditioner_(std::make_unique<SystemPreconditioner>()) {
   model.elastic().setModel(settings_.elasticModel);
+  preconditioner_->setReproducible(settings_.reproducible);
   const Eigen::Index n = model.numControlPoints();
   position_ = model.restControl();
   velocity_.setZero(n, 3);
@@ -88,6 +89,7 @@ std::string Simulator::setSettings(const SimulationSettings& s) {
   if (s.corotated != settings_.corotated)
     elastic_ = std::make_unique<ElasticForm>(model_, s.corotated);
   if (s.elasticModel != model_.elastic().model()) model_.elastic().setModel(s.elasticModel);
+  preconditioner_->setReproducible(s.reproducible);
   settings_ = s;
   return {};
 }

@@ -42,6 +42,10 @@ struct SimulationSettings {
   double implicitTolerance = 1e-6;  ///< relative CG residual of the implicit and static solves
   int maxIterations = 2000;         ///< CG iterations per solve
   int maxHalvings = 10;             ///< a failing step is retried with up to 2^this sub-steps
+  /// The same inputs give the same bits: preconditioner factors made on a worker thread are
+  /// taken at fixed steps, waited for when late. False (the window): taken when ready, never
+  /// waited for.
+  bool reproducible = true;
 };
 
 struct StepReport {

@@ -43,8 +43,10 @@ struct SystemPreconditioner::Request {
   std::shared_ptr<const std::atomic<bool>> cancelled;  // set: give up (no factor)
 };
 
-// Taken a fixed number of solves after its start (waiting if it is late), never when it happens
-// to be ready: the results must not depend on timing. Dropped or destroyed, it is told to stop.
+// Reproducible: taken a fixed number of solves after its start (waiting if it is late), never
+// when it happens to be ready, so that the results do not depend on timing. Otherwise (the
+// window): taken at the first solve that finds it ready, never waited for. Dropped or
+// destroyed, it is told to stop.
 class SystemPreconditioner::WorkerFactor {
  public:
   WorkerFactor(Request request, SparseCholesky::Method method, int delay);
@@ -53,9 +55,14 @@ class SystemPreconditioner::WorkerFactor {
   WorkerFactor& operator=(const WorkerFactor&) = delete;
   bool running() const { return future_.valid(); }
   // Counts this solve; the factor when its turn has come (null before, and once taken).
-  std::unique_ptr<Factor> takeWhenDue() {
-    if (!running() || ++solvesSinceStart_ < delay_) return nullptr;
-    return future_.get();
+  std::unique_ptr<Factor> takeWhenDue(bool reproducible) {
+    if (!running()) return nullptr;
+    ++solvesSinceStart_;
+    if (!reproducible)
+      return future_.wait_for(std::chrono::seconds(0)) == std::future_status::ready
+                 ? future_.get()
+                 : nullptr;
+    return solvesSinceStart_ < delay_ ? nullptr : future_.get();
   }
   void drop() {
     *cancelled_ = true;
@@ -276,7 +283,7 @@ bool SystemPreconditioner::update(const FemModel& model, double massScale, doubl
     throw std::invalid_argument("SystemPreconditioner: free coordinates must be increasing");
   const double scales[3] = {massScale, dampingScale, stiffnessScale};
   if (pending_)
-    if (std::unique_ptr<Factor> factor = pending_->takeWhenDue())
+    if (std::unique_ptr<Factor> factor = pending_->takeWhenDue(reproducible_))
       adoptFromWorker(std::move(factor), freeDofs);
   const bool pending = pending_ && pending_->running();
   if (!factor_ || !std::equal(scales, scales + 3, factor_->scales)) {
@@ -331,7 +338,7 @@ void SystemPreconditioner::countQuietSolves(const FemModel& model) {
 void SystemPreconditioner::upgradeToRestStiffness(const FemModel& model,
                                                   const std::vector<int>& freeDofs) {
   if (upgrade_ && upgrade_->running()) {
-    adoptFromWorker(upgrade_->takeWhenDue(), freeDofs);
+    adoptFromWorker(upgrade_->takeWhenDue(reproducible_), freeDofs);
     return;
   }
   // Not from the first solve: its step is what the window waits for. Static solves (no
@@ -347,10 +354,11 @@ void SystemPreconditioner::upgradeToRestStiffness(const FemModel& model,
   const double* scales = factor_->scales;
   Request request = requestFor(model, scales[0], scales[1], scales[2], freeDofs);
   request.restStiffness = true;
-  // Making it costs about 0.14 ms of a core per element (the bunny's 2,968: 0.4 s). In the
-  // window, at 60 steps a second beside the drawing, the worker gets about half a core: adopted
-  // 20 solves on, the window's step waited 75-244 ms for it.
-  const int delay = std::max(kUpgradeDelayLeast, int(model.mesh().numElements() / 40));
+  // Making it costs about 0.14 ms of a core per element (the bunny's 2,968: 0.4 s). A
+  // reproducible run waits for it at its turn; the bunny's turn, the 20th solve after its start,
+  // finds it ready when the steps are drawn one by one (sculpt --bench) and within a few steps
+  // of ready in a tight loop (sculpt-cli).
+  const int delay = std::max(kUpgradeDelayLeast, int(model.mesh().numElements() / 150));
   upgrade_ = std::make_unique<WorkerFactor>(std::move(request), method_, delay);
 }
 

@@ -8,8 +8,8 @@
 //    one, which is exact for a uniform change of the materials and close for a local one.
 //  - After a pin edit, or once the rescaled factor costs CG noticeably more iterations than a
 //    fresh one did, a new factor is made on a worker thread while the old one keeps serving, and
-//    adopted a fixed number of solves later (waiting if it is late): same inputs, same bits, in
-//    the window as in the CLI.
+//    adopted a fixed number of solves later (waiting if it is late): same inputs, same bits.
+//    The window instead adopts it at the first solve that finds it ready, and never waits.
 //  - Each solve may turn the residual into the control points' frames first (r' = R^T r, then
 //    z = R S0^-1 r', R a rotation per point from the elements' co-rotation frames): exact for a
 //    solid turned rigidly, and close while it bends. Tried only where the stiffness makes up a
@@ -73,6 +73,10 @@ class SystemPreconditioner {
   /// factor's drift.
   void reportIterations(int iterations);
   const PreconditionerStats& stats() const { return stats_; }
+  /// True (the default): factors made on the worker are adopted a fixed number of solves after
+  /// their start, waiting for them if they are late, so that the same inputs give the same bits.
+  /// False: adopted at the first solve that finds them ready, never waited for (the window).
+  void setReproducible(bool reproducible) { reproducible_ = reproducible; }
 
   /// One factor and what it was made for, and what making one needs (copied from the model).
   struct Factor;
@@ -106,6 +110,7 @@ class SystemPreconditioner {
   void adoptFromWorker(std::unique_ptr<Factor> factor, const std::vector<int>& freeDofs);
 
   SparseCholesky::Method method_;
+  bool reproducible_ = true;
   std::unique_ptr<Factor> factor_;
   // Applying the factor to the current free coordinates: position in the factor's numbering
   // (-1: not in it, served by the diagonal), and D^-1/2 (empty: no rescaling).
