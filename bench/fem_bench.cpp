@@ -16,6 +16,7 @@
 #include "fem/polar_rotation.h"
 #include "fem/tricubic_kernel.h"
 #include "sim/linear_stiffness.h"
+#include "sim/rest_stiffness.h"
 #include "sim/standard_forms.h"
 #include "sim/system_preconditioner.h"
 #include "unit_block.h"

@@ -5,13 +5,12 @@
 #include <array>
 #include <cmath>
 #include <cstdint>
-#include <map>
 #include <utility>
 #include <vector>
 
 #include "fem/quadrature.h"
 #include "fem/trilinear_shape.h"
-#include "fem/tricubic_kernel.h"
+#include "sim/node_block_rows.h"
 #include "util/dense_accumulator.h"
 
 namespace sculpt {
@@ -65,28 +64,13 @@ LameParameters meanLame(const FemMesh& mesh, std::span<const LameParameters> lam
 }
 
 
-// A linear element's rest stiffness, from its own Gauss points.
-ElementStiffness linearElementStiffness(const FemMesh& mesh, std::span<const LameParameters> lame,
-                                        uint32_t e) {
-  ElementStiffnessSum sum;
-  const uint32_t l = e - mesh.numTricubic(), g0 = mesh.gaussBegin(e);
-  for (int q = 0; q < kLinearGaussPoints; ++q)
-    sum.add(mesh.linearShapeGradient[size_t(l) * 8 + q], mesh.gaussVolume[g0 + q], lame[g0 + q]);
-  return sum.matrix();
-}
+}  // namespace
 
-// A node matrix as 3x3 blocks: row n couples node n's coordinates with node neighbours[n][k]'s
-// through blocks[n][k].
-struct NodeBlocks {
-  std::vector<std::vector<uint32_t>> neighbours;
-  std::vector<std::vector<Eigen::Matrix3d>> blocks;
-};
-
-// S = (A x I3)^T K (A x I3) for a node matrix K, as S_ij = sum_nm A_ni K_nm A_mj on 3x3 blocks,
-// in two sparse passes with dense row accumulators: T = K A row by row, then S = A^T T. As
-// scalar sparse products it took 4x longer, most of a first step (block10 at K = 1: 260 ms).
-SparseMatrix reduceNodeBlocks(NodeBlocks K, const SparseMatrix& A) {
-  const uint32_t numNodes = uint32_t(K.neighbours.size());
+SparseMatrix reduceNodeBlocks(const NodeBlockRows& K, const SparseMatrix& A) {
+  // S_ij = sum_nm A_ni K_nm A_mj on 3x3 blocks, in two sparse passes with dense row
+  // accumulators: T = K A row by row, then S = A^T T. As scalar sparse products it took 4x
+  // longer, most of a first step (block10 at K = 1: 260 ms).
+  const uint32_t numNodes = K.numNodes();
   const Eigen::Index numControl = A.cols();
   // A dense accumulator over the control points.
   DenseAccumulator<Eigen::Matrix3d> sum(size_t(numControl), Eigen::Matrix3d::Zero());
@@ -98,16 +82,15 @@ SparseMatrix reduceNodeBlocks(NodeBlocks K, const SparseMatrix& A) {
   std::vector<uint32_t> tColumn;
   std::vector<Eigen::Matrix3d> tBlock;
   for (uint32_t n = 0; n < numNodes; ++n) {
-    for (size_t k = 0; k < K.neighbours[n].size(); ++k)
-      for (RowSparseMatrix::InnerIterator it(rowsOfA, K.neighbours[n][k]); it; ++it)
-        sum.add(uint32_t(it.col()), it.value() * K.blocks[n][k]);
+    for (uint32_t k = K.begin[n]; k < K.begin[n + 1]; ++k)
+      for (RowSparseMatrix::InnerIterator it(rowsOfA, K.column[k]); it; ++it)
+        sum.add(uint32_t(it.col()), it.value() * K.block[k]);
     sum.drain([&](uint32_t j, const Eigen::Matrix3d& block) {
       tColumn.push_back(j);
       tBlock.push_back(block);
     });
     tBegin[n + 1] = tColumn.size();
   }
-  K = {};
 
   // S = A^T T: control row i gathers A_ni T_n over the nodes n of A's column i. S is symmetric,
   // so row i's blocks, transposed, are column i's: column 3i + c holds S_ij(c, r) at row 3j + r.
@@ -133,127 +116,15 @@ SparseMatrix reduceNodeBlocks(NodeBlocks K, const SparseMatrix& A) {
   return S;
 }
 
-// The pattern of the elements' own stiffness, zero: each node's row holds, in increasing order,
-// every node it shares an element with.
-NodeBlocks elementNodePattern(const FemMesh& mesh) {
-  const uint32_t numNodes = mesh.numNodes();
-  std::vector<std::vector<uint32_t>> elementsOf(numNodes);
-  for (uint32_t e = 0; e < mesh.numElements(); ++e)
-    for (uint32_t n : mesh.elementNodes(e))
-      if (elementsOf[n].empty() || elementsOf[n].back() != e) elementsOf[n].push_back(e);
-  NodeBlocks K{std::vector<std::vector<uint32_t>>(numNodes),
-               std::vector<std::vector<Eigen::Matrix3d>>(numNodes)};
-  std::vector<uint32_t> seenBy(numNodes, ~0u);
-  for (uint32_t n = 0; n < numNodes; ++n) {
-    std::vector<uint32_t>& row = K.neighbours[n];
-    for (uint32_t e : elementsOf[n])
-      for (uint32_t m : mesh.elementNodes(e))
-        if (seenBy[m] != n) {
-          seenBy[m] = n;
-          row.push_back(m);
-        }
-    std::sort(row.begin(), row.end());
-    K.blocks[n].assign(row.size(), Eigen::Matrix3d::Zero());
-  }
-  return K;
+Eigen::Matrix<double, 24, 24> linearElementStiffness(const FemMesh& mesh,
+                                                     std::span<const LameParameters> lame,
+                                                     uint32_t e) {
+  ElementStiffnessSum sum;
+  const uint32_t l = e - mesh.numTricubic(), g0 = mesh.gaussBegin(e);
+  for (int q = 0; q < kLinearGaussPoints; ++q)
+    sum.add(mesh.linearShapeGradient[size_t(l) * 8 + q], mesh.gaussVolume[g0 + q], lame[g0 + q]);
+  return sum.matrix();
 }
-
-// Adds a symmetric element matrix on nodes `ids` to K (in its pattern); entry (a, r; b, c),
-// coordinate r of the element's node a against coordinate c of node b, is Ke(at(a, r), at(b, c)).
-// Read down columns, where the matrix is contiguous. `where` (one entry per node) is scratch.
-template <class Matrix, class At>
-void addElementMatrix(NodeBlocks& K, std::span<const uint32_t> ids, const Matrix& Ke, At at,
-                      std::vector<uint32_t>& where) {
-  const int count = int(ids.size());
-  std::array<uint32_t, kTricubicNodes> position;
-  for (int a = 0; a < count; ++a) {
-    const std::vector<uint32_t>& row = K.neighbours[ids[size_t(a)]];
-    std::vector<Eigen::Matrix3d>& rowBlocks = K.blocks[ids[size_t(a)]];
-    // Every node of the element is in the row: its place, without a search per node.
-    for (size_t k = 0; k < row.size(); ++k) where[row[k]] = uint32_t(k);
-    for (int b = 0; b < count; ++b) position[size_t(b)] = where[ids[size_t(b)]];
-    for (int r = 0; r < 3; ++r) {
-      const double* column = Ke.col(at(a, r)).data();
-      for (int b = 0; b < count; ++b)
-        for (int c = 0; c < 3; ++c) rowBlocks[position[size_t(b)]](r, c) += column[at(b, c)];
-    }
-  }
-}
-
-// Tricubic elements' rest stiffness, 192 x 192 (coordinate c of node a at row c*64 + a), as the
-// kernel computes it: its Hessian products with the unit vectors at rotation I. An affine element
-// of uniform material is lambda K_lambda + mu K_mu, with the two parts shared by every element of
-// the same inverse Jacobian and volume (all the cells of a block, most of a cage's).
-class TricubicStiffness {
- public:
-  explicit TricubicStiffness(const FemMesh& mesh, std::span<const LameParameters> lame)
-      : mesh_(mesh), lame_(lame), matrix_(192, 192) {}
-
-  const Eigen::MatrixXd& operator()(uint32_t e) {
-    const Eigen::Matrix3d* J = mesh_.tricubicInverseJacobian.data() + size_t(e) * 64;
-    const double* volume = mesh_.gaussVolume.data() + mesh_.gaussBegin(e);
-    const LameParameters* lame = lame_.data() + mesh_.gaussBegin(e);
-    const bool affine = affineInverseJacobians(J);
-    bool uniform = true;
-    for (int q = 1; q < kTricubicGaussPoints && uniform; ++q)
-      uniform = lame[q].lambda == lame[0].lambda && lame[q].mu == lame[0].mu;
-    if (!affine || !uniform) {
-      probe(J, affine, volume, lame, matrix_);
-      return matrix_;
-    }
-    // Elements of one shape agree to rounding only (their Jacobians come from their own
-    // corners): the key keeps 30 bits of the volume, of the largest entry and of each entry
-    // relative to it (a zero comes out as rounding noise).
-    const double scale = J[0].cwiseAbs().maxCoeff();
-    std::array<double, 11> key;
-    for (int rc = 0; rc < 9; ++rc)
-      key[size_t(rc)] = std::round(J[0](rc / 3, rc % 3) / scale * 0x1p30);
-    key[9] = roundedTo30Bits(scale);
-    key[10] = roundedTo30Bits(volume[0]);
-    auto found = shared_.find(key);
-    if (found == shared_.end()) {
-      Parts parts{Eigen::MatrixXd(192, 192), Eigen::MatrixXd(192, 192)};
-      std::vector<LameParameters> unit(kTricubicGaussPoints);
-      for (LameParameters& p : unit) p = {1.0, 0.0};
-      probe(J, true, volume, unit.data(), parts.lambda);
-      for (LameParameters& p : unit) p = {0.0, 1.0};
-      probe(J, true, volume, unit.data(), parts.mu);
-      found = shared_.emplace(key, std::move(parts)).first;
-    }
-    matrix_.noalias() = lame[0].lambda * found->second.lambda + lame[0].mu * found->second.mu;
-    return matrix_;
-  }
-
- private:
-  struct Parts {
-    Eigen::MatrixXd lambda, mu;
-  };
-  static double roundedTo30Bits(double value) {
-    int exponent = 0;
-    const double mantissa = std::frexp(value, &exponent);
-    return std::ldexp(std::round(std::ldexp(mantissa, 30)), exponent - 30);
-  }
-  static void probe(const Eigen::Matrix3d* J, bool affine, const double* volume,
-                    const LameParameters* lame, Eigen::MatrixXd& K) {
-    std::vector<double> block(size_t(tricubicRestSize(affine)));
-    packTricubicInverseJacobians(J, affine, block.data());
-    packTricubicMaterial(volume, lame, affine, block.data());
-    const TricubicPacked view = tricubicPackedView(block.data(), affine, block.data(), 0);
-    double u[192] = {};
-    for (int j = 0; j < 192; ++j) {
-      u[j] = 1.0;
-      tricubicElementKernel(u, view, Eigen::Matrix3d::Identity(), false, false, K.col(j).data());
-      u[j] = 0.0;
-    }
-  }
-
-  const FemMesh& mesh_;
-  std::span<const LameParameters> lame_;
-  Eigen::MatrixXd matrix_;
-  std::map<std::array<double, 11>, Parts> shared_;
-};
-
-}  // namespace
 
 std::array<uint32_t, 8> elementCorners(const FemMesh& mesh, uint32_t e) {
   if (e >= mesh.numTricubic()) return mesh.linearNodes[e - mesh.numTricubic()];
@@ -291,8 +162,8 @@ SparseMatrix reducedLinearStiffness(const FemMesh& mesh, std::span<const LamePar
   // [0.65, 1.02] (docs/fem.md, "The implicit solver's preconditioner").
   const double standIn[2] = {0.5 + kStandInSpread * (gauss2.points[0] - 0.5),
                              0.5 + kStandInSpread * (gauss2.points[1] - 0.5)};
-  NodeBlocks K{std::vector<std::vector<uint32_t>>(mesh.numNodes()),
-               std::vector<std::vector<Eigen::Matrix3d>>(mesh.numNodes())};
+  std::vector<std::vector<uint32_t>> neighbours(mesh.numNodes());
+  std::vector<std::vector<Eigen::Matrix3d>> blocks(mesh.numNodes());
   for (uint32_t e = 0; e < mesh.numElements(); ++e) {
     ElementStiffnessSum sum;
     const std::array<uint32_t, 8> ids = elementCorners(mesh, e);
@@ -319,8 +190,8 @@ SparseMatrix reducedLinearStiffness(const FemMesh& mesh, std::span<const LamePar
     const ElementStiffness Ke = e < mesh.numTricubic() ? sum.matrix()
                                                        : linearElementStiffness(mesh, lame, e);
     for (int a = 0; a < 8; ++a) {
-      std::vector<uint32_t>& row = K.neighbours[ids[a]];
-      std::vector<Eigen::Matrix3d>& rowBlocks = K.blocks[ids[a]];
+      std::vector<uint32_t>& row = neighbours[ids[a]];
+      std::vector<Eigen::Matrix3d>& rowBlocks = blocks[ids[a]];
       for (int b = 0; b < 8; ++b) {
         const auto at = std::find(row.begin(), row.end(), ids[b]);
         const Eigen::Matrix3d block = Ke.block<3, 3>(3 * a, 3 * b);
@@ -333,24 +204,15 @@ SparseMatrix reducedLinearStiffness(const FemMesh& mesh, std::span<const LamePar
       }
     }
   }
-  return reduceNodeBlocks(std::move(K), A);
-}
-
-SparseMatrix reducedRestStiffness(const FemMesh& mesh, std::span<const LameParameters> lame,
-                                  const SparseMatrix& A, const std::atomic<bool>* stop) {
-  NodeBlocks K = elementNodePattern(mesh);
-  TricubicStiffness tricubic(mesh, lame);
-  std::vector<uint32_t> where(mesh.numNodes());
-  for (uint32_t e = 0; e < mesh.numTricubic(); ++e) {
-    if (stop && e % 64 == 0 && *stop) return {};
-    addElementMatrix(K, mesh.tricubicNodes[e], tricubic(e),
-                     [](int a, int c) { return c * 64 + a; }, where);
+  NodeBlockRows K;
+  for (uint32_t n = 0; n < mesh.numNodes(); ++n) {
+    K.column.insert(K.column.end(), neighbours[n].begin(), neighbours[n].end());
+    K.block.insert(K.block.end(), blocks[n].begin(), blocks[n].end());
+    K.begin.push_back(uint32_t(K.column.size()));
   }
-  for (uint32_t e = mesh.numTricubic(); e < mesh.numElements(); ++e)
-    addElementMatrix(K, mesh.elementNodes(e), linearElementStiffness(mesh, lame, e),
-                     [](int a, int c) { return 3 * a + c; }, where);
-  if (stop && *stop) return {};
-  return reduceNodeBlocks(std::move(K), A);
+  neighbours = {};
+  blocks = {};
+  return reduceNodeBlocks(K, A);
 }
 
 }  // namespace sculpt

@@ -7,7 +7,6 @@
 // computed on 3x3 node blocks.
 
 #include <array>
-#include <atomic>
 #include <cstdint>
 #include <span>
 
@@ -22,15 +21,6 @@ SparseMatrix reducedLinearStiffness(const FemModel& model);
 /// control-to-node stencil matrix: usable on a copy of the materials away from the model.
 SparseMatrix reducedLinearStiffness(const FemMesh& mesh, std::span<const LameParameters> lame,
                                     const SparseMatrix& A);
-
-/// The elements' own rest stiffness reduced to the control points, A^T K A: each tricubic
-/// element with its B-spline shape functions at its 4^3 Gauss points (what the elastic kernel's
-/// Hessian product gives at rotation I), each linear one as above. It couples each control point
-/// with 7^3 others inside a regular lattice at K = 1 where the stand-in couples 5^3, so its
-/// factor is denser and slower to make; preconditioned with it, CG takes fewer iterations.
-/// Once `stop` (when given) is set, returns an empty matrix soon.
-SparseMatrix reducedRestStiffness(const FemMesh& mesh, std::span<const LameParameters> lame,
-                                  const SparseMatrix& A, const std::atomic<bool>* stop = nullptr);
 
 /// The 8 nodes of element e's stand-in: a trilinear or pyramid element's own, a tricubic
 /// element's cell corners (block [1,2]^3 of its 4^3 nodes), in trilinear order.

@@ -7,6 +7,7 @@
 
 #include "fem/elastic_kernel.h"
 #include "sim/linear_stiffness.h"
+#include "sim/rest_stiffness.h"
 
 namespace sculpt {
 

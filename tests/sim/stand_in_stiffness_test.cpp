@@ -12,6 +12,7 @@
 #include <filesystem>
 
 #include "sim/linear_stiffness.h"
+#include "sim/rest_stiffness.h"
 #include "support/fem_builders.h"
 #include "support/painted_mixed_model.h"
 

@@ -273,8 +273,9 @@ TEST(SystemPreconditioner, TheWindowTakesTheElementsOwnStiffnessAsSoonAsItIsRead
   settings.reproducible = false;
   Simulator simulator(*model, settings);
   pinTheBottomUnderGravity(simulator);
-  // The factor is started at the second solve; given time to be made, it is taken at the next
-  // solve, long before a reproducible run's turn (the 22nd).
+  // The factor is started at the second solve; given time to be made (half a second between
+  // steps: measured at solve 3 alone, 4 beside the whole test suite), it is taken long before a
+  // reproducible run's turn, the 22nd solve.
   int adoptedAt = 0;
   for (int solve = 1; solve < 22 && !adoptedAt; ++solve) {
     ASSERT_TRUE(simulator.step().ok);
@@ -282,7 +283,7 @@ TEST(SystemPreconditioner, TheWindowTakesTheElementsOwnStiffnessAsSoonAsItIsRead
     std::this_thread::sleep_for(std::chrono::milliseconds(500));
   }
   std::printf("[ when ready ] adopted at solve %d\n", adoptedAt);
-  EXPECT_EQ(adoptedAt, 3);
+  EXPECT_GE(adoptedAt, 3);  // 0: not adopted before the 22nd solve
 }
 
 TEST(SystemPreconditioner, AnInertiaDominatedSystemKeepsTheStandInUnrotated) {

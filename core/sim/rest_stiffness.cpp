@@ -1,0 +1,230 @@
+#include "sim/rest_stiffness.h"
+
+#include <Eigen/Core>
+#include <algorithm>
+#include <array>
+#include <cmath>
+#include <cstdint>
+#include <map>
+#include <numeric>
+#include <utility>
+#include <vector>
+
+#include "fem/tricubic_kernel.h"
+#include "sim/node_block_rows.h"
+
+namespace sculpt {
+namespace {
+
+using Block = Eigen::Matrix3d;
+
+// The elements' own stiffness on the nodes, zero at first: each node's row holds, in increasing
+// order, every node it shares an element with; diagonal[n] is n's place in its own row. The
+// rows are symmetric, so the elements add only the blocks on and above the diagonal, half of
+// them, and the ones below are their transposes.
+struct NodeStiffness {
+  NodeBlockRows K;
+  std::vector<uint32_t> diagonal;
+};
+
+NodeStiffness elementNodePattern(const FemMesh& mesh) {
+  const uint32_t numNodes = mesh.numNodes(), numElements = mesh.numElements();
+  // The elements around each node, row by row.
+  std::vector<uint32_t> aroundBegin(size_t(numNodes) + 1, 0);
+  for (uint32_t e = 0; e < numElements; ++e)
+    for (uint32_t n : mesh.elementNodes(e)) ++aroundBegin[n + 1];
+  std::partial_sum(aroundBegin.begin(), aroundBegin.end(), aroundBegin.begin());
+  std::vector<uint32_t> around(aroundBegin.back());
+  {
+    std::vector<uint32_t> next(aroundBegin.begin(), aroundBegin.end() - 1);
+    for (uint32_t e = 0; e < numElements; ++e)
+      for (uint32_t n : mesh.elementNodes(e)) around[next[n]++] = e;
+  }
+  NodeStiffness result;
+  NodeBlockRows& K = result.K;
+  result.diagonal.resize(numNodes);
+  K.begin.reserve(size_t(numNodes) + 1);
+  std::vector<uint32_t> seenBy(numNodes, ~0u);
+  for (uint32_t n = 0; n < numNodes; ++n) {
+    const size_t rowBegin = K.column.size();
+    for (uint32_t k = aroundBegin[n]; k < aroundBegin[n + 1]; ++k)
+      for (uint32_t m : mesh.elementNodes(around[k]))
+        if (seenBy[m] != n) {
+          seenBy[m] = n;
+          K.column.push_back(m);
+        }
+    const auto row = K.column.begin() + std::ptrdiff_t(rowBegin);
+    std::sort(row, K.column.end());
+    result.diagonal[n] = uint32_t(std::lower_bound(row, K.column.end(), n) - K.column.begin());
+    K.begin.push_back(uint32_t(K.column.size()));
+  }
+  K.block.assign(K.column.size(), Block::Zero());
+  return result;
+}
+
+// Adds the blocks on and above the diagonal of a symmetric element matrix on nodes `ids`:
+// blockOf(a, b) couples the element's nodes a and b. `where` (one entry per node) is scratch.
+template <class BlockOf>
+void addUpperBlocks(NodeStiffness& nodes, std::span<const uint32_t> ids, const BlockOf& blockOf,
+                    std::vector<uint32_t>& where) {
+  const int count = int(ids.size());
+  std::array<int, kTricubicNodes> order;
+  std::iota(order.begin(), order.begin() + count, 0);
+  std::sort(order.begin(), order.begin() + count, [&](int a, int b) {
+    return ids[size_t(a)] < ids[size_t(b)];
+  });
+  NodeBlockRows& K = nodes.K;
+  for (int i = 0; i < count; ++i) {
+    const int a = order[size_t(i)];
+    const uint32_t n = ids[size_t(a)];
+    // The places of the nodes after n in n's row, without a search per node.
+    for (uint32_t k = nodes.diagonal[n]; k < K.begin[n + 1]; ++k) where[K.column[k]] = k;
+    for (int j = i; j < count; ++j) {
+      const int b = order[size_t(j)];
+      Block& target = K.block[where[ids[size_t(b)]]];
+      target += blockOf(a, b);
+      // A node in two places of the element (a pyramid's apex) gets both blocks between them.
+      if (j != i && ids[size_t(b)] == n) target += blockOf(b, a);
+    }
+  }
+}
+
+// The blocks below the diagonal: block (m, n) is block (n, m) transposed. Row m's blocks below
+// its diagonal are those of the rows n < m that reach m, in increasing n.
+void mirrorUpperBlocks(NodeStiffness& nodes) {
+  NodeBlockRows& K = nodes.K;
+  std::vector<uint32_t> next(K.begin.begin(), K.begin.end() - 1);
+  for (uint32_t n = 0; n < K.numNodes(); ++n)
+    for (uint32_t k = nodes.diagonal[n] + 1; k < K.begin[n + 1]; ++k)
+      K.block[next[K.column[k]]++] = K.block[k].transpose();
+}
+
+// A tricubic element's rest stiffness, as the kernel computes it: its Hessian products with the
+// unit vectors at rotation I. An affine element of uniform material is lambda K_lambda + mu K_mu,
+// with the two parts shared by every element of the same inverse Jacobian and volume (all the
+// cells of a block, most of a cage's), kept as 64 x 64 blocks (a * 64 + b).
+class TricubicStiffness {
+ public:
+  // Either an element's own matrix (192 x 192, coordinate c of node a at row c * 64 + a) or a
+  // pair of shared parts and their weights.
+  struct Element {
+    const Eigen::MatrixXd* own = nullptr;
+    const Block* lambdaPart = nullptr;
+    const Block* muPart = nullptr;
+    double lambda = 0, mu = 0;
+  };
+
+  TricubicStiffness(const FemMesh& mesh, std::span<const LameParameters> lame)
+      : mesh_(mesh), lame_(lame), own_(192, 192) {}
+
+  Element operator()(uint32_t e) {
+    const Eigen::Matrix3d* J = mesh_.tricubicInverseJacobian.data() + size_t(e) * 64;
+    const double* volume = mesh_.gaussVolume.data() + mesh_.gaussBegin(e);
+    const LameParameters* lame = lame_.data() + mesh_.gaussBegin(e);
+    const bool affine = affineInverseJacobians(J);
+    bool uniform = true;
+    for (int q = 1; q < kTricubicGaussPoints && uniform; ++q)
+      uniform = lame[q].lambda == lame[0].lambda && lame[q].mu == lame[0].mu;
+    if (!affine || !uniform) {
+      probe(J, affine, volume, lame, own_);
+      return {&own_};
+    }
+    // Elements of one shape agree to rounding only (their Jacobians come from their own
+    // corners): the key keeps 30 bits of the volume, of the largest entry and of each entry
+    // relative to it (a zero comes out as rounding noise).
+    const double scale = J[0].cwiseAbs().maxCoeff();
+    std::array<double, 11> key;
+    for (int rc = 0; rc < 9; ++rc)
+      key[size_t(rc)] = std::round(J[0](rc / 3, rc % 3) / scale * 0x1p30);
+    key[9] = roundedTo30Bits(scale);
+    key[10] = roundedTo30Bits(volume[0]);
+    auto found = shared_.find(key);
+    if (found == shared_.end()) {
+      Parts parts;
+      std::vector<LameParameters> unit(kTricubicGaussPoints);
+      for (LameParameters& p : unit) p = {1.0, 0.0};
+      probe(J, true, volume, unit.data(), own_);
+      parts.lambda = blocksOf(own_);
+      for (LameParameters& p : unit) p = {0.0, 1.0};
+      probe(J, true, volume, unit.data(), own_);
+      parts.mu = blocksOf(own_);
+      found = shared_.emplace(key, std::move(parts)).first;
+    }
+    return {nullptr, found->second.lambda.data(), found->second.mu.data(), lame[0].lambda,
+            lame[0].mu};
+  }
+
+  // Block (a, b) of an element's own matrix.
+  static Block blockOf(const Eigen::MatrixXd& K, int a, int b) {
+    Block block;
+    for (int c = 0; c < 3; ++c)
+      for (int r = 0; r < 3; ++r) block(r, c) = K(r * 64 + a, c * 64 + b);
+    return block;
+  }
+
+ private:
+  struct Parts {
+    std::vector<Block> lambda, mu;
+  };
+  static std::vector<Block> blocksOf(const Eigen::MatrixXd& K) {
+    std::vector<Block> blocks(size_t(kTricubicNodes) * kTricubicNodes);
+    for (int a = 0; a < kTricubicNodes; ++a)
+      for (int b = 0; b < kTricubicNodes; ++b) blocks[size_t(a * 64 + b)] = blockOf(K, a, b);
+    return blocks;
+  }
+  static double roundedTo30Bits(double value) {
+    int exponent = 0;
+    const double mantissa = std::frexp(value, &exponent);
+    return std::ldexp(std::round(std::ldexp(mantissa, 30)), exponent - 30);
+  }
+  static void probe(const Eigen::Matrix3d* J, bool affine, const double* volume,
+                    const LameParameters* lame, Eigen::MatrixXd& K) {
+    std::vector<double> block(size_t(tricubicRestSize(affine)));
+    packTricubicInverseJacobians(J, affine, block.data());
+    packTricubicMaterial(volume, lame, affine, block.data());
+    const TricubicPacked view = tricubicPackedView(block.data(), affine, block.data(), 0);
+    double u[192] = {};
+    for (int j = 0; j < 192; ++j) {
+      u[j] = 1.0;
+      tricubicElementKernel(u, view, Eigen::Matrix3d::Identity(), false, false, K.col(j).data());
+      u[j] = 0.0;
+    }
+  }
+
+  const FemMesh& mesh_;
+  std::span<const LameParameters> lame_;
+  Eigen::MatrixXd own_;
+  std::map<std::array<double, 11>, Parts> shared_;
+};
+
+}  // namespace
+
+SparseMatrix reducedRestStiffness(const FemMesh& mesh, std::span<const LameParameters> lame,
+                                  const SparseMatrix& A, const std::atomic<bool>* stop) {
+  NodeStiffness nodes = elementNodePattern(mesh);
+  TricubicStiffness tricubic(mesh, lame);
+  std::vector<uint32_t> where(mesh.numNodes());
+  for (uint32_t e = 0; e < mesh.numTricubic(); ++e) {
+    if (stop && e % 64 == 0 && *stop) return {};
+    const TricubicStiffness::Element Ke = tricubic(e);
+    if (Ke.own) {
+      addUpperBlocks(nodes, mesh.tricubicNodes[e],
+                     [&](int a, int b) { return TricubicStiffness::blockOf(*Ke.own, a, b); }, where);
+    } else {
+      addUpperBlocks(nodes, mesh.tricubicNodes[e], [&](int a, int b) -> Block {
+        const size_t ab = size_t(a * 64 + b);
+        return Ke.lambda * Ke.lambdaPart[ab] + Ke.mu * Ke.muPart[ab];
+      }, where);
+    }
+  }
+  for (uint32_t e = mesh.numTricubic(); e < mesh.numElements(); ++e) {
+    const Eigen::Matrix<double, 24, 24> Ke = linearElementStiffness(mesh, lame, e);
+    addUpperBlocks(nodes, mesh.elementNodes(e),
+                   [&](int a, int b) -> Block { return Ke.block<3, 3>(3 * a, 3 * b); }, where);
+  }
+  if (stop && *stop) return {};
+  mirrorUpperBlocks(nodes);
+  return reduceNodeBlocks(nodes.K, A);
+}
+
+}  // namespace sculpt
