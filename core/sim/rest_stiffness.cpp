@@ -208,8 +208,8 @@ SparseMatrix reducedRestStiffness(const FemMesh& mesh, std::span<const LameParam
     if (stop && e % 64 == 0 && *stop) return {};
     const TricubicStiffness::Element Ke = tricubic(e);
     if (Ke.own) {
-      addUpperBlocks(nodes, mesh.tricubicNodes[e],
-                     [&](int a, int b) { return TricubicStiffness::blockOf(*Ke.own, a, b); }, where);
+      const auto own = [&](int a, int b) { return TricubicStiffness::blockOf(*Ke.own, a, b); };
+      addUpperBlocks(nodes, mesh.tricubicNodes[e], own, where);
     } else {
       addUpperBlocks(nodes, mesh.tricubicNodes[e], [&](int a, int b) -> Block {
         const size_t ab = size_t(a * 64 + b);

@@ -273,14 +273,18 @@ TEST(SystemPreconditioner, TheWindowTakesTheElementsOwnStiffnessAsSoonAsItIsRead
   settings.reproducible = false;
   Simulator simulator(*model, settings);
   pinTheBottomUnderGravity(simulator);
-  // The factor is started at the second solve; given time to be made (half a second between
-  // steps: measured at solve 3 alone, 4 beside the whole test suite), it is taken long before a
-  // reproducible run's turn, the 22nd solve.
+  // The factor is started at the second solve; given time to be made between steps (half a
+  // second, or three steps' time where the steps are slow, as under a sanitizer), it is taken
+  // long before a reproducible run's turn, the 22nd solve. Measured: at solve 3 alone, 4 beside
+  // the whole test suite, 19 under ThreadSanitizer with half a second.
   int adoptedAt = 0;
   for (int solve = 1; solve < 22 && !adoptedAt; ++solve) {
+    const auto start = std::chrono::steady_clock::now();
     ASSERT_TRUE(simulator.step().ok);
     if (simulator.preconditionerStats().restStiffness) adoptedAt = solve;
-    std::this_thread::sleep_for(std::chrono::milliseconds(500));
+    const auto stepTime = std::chrono::steady_clock::now() - start;
+    std::this_thread::sleep_for(std::max<std::chrono::steady_clock::duration>(
+        std::chrono::milliseconds(500), 3 * stepTime));
   }
   std::printf("[ when ready ] adopted at solve %d\n", adoptedAt);
   EXPECT_GE(adoptedAt, 3);  // 0: not adopted before the 22nd solve
