@@ -26,7 +26,7 @@ namespace sculpt::cli {
 const std::vector<OptionSpec> kFemBenchOptions = {
     {"integrator", true}, {"model", true},       {"steps", true},
     {"dt", true},         {"paint-every", true}, {"cage", true},
-    {"paint-field", true}, {"fresh-factor", false}, {"trace", false}};
+    {"paint-field", true}, {"fresh-factor", false}, {"as-window", false}, {"trace", false}};
 
 namespace {
 
@@ -161,6 +161,7 @@ struct BenchRun {
   int paintEvery = 0;
   bool paintDensity = false;
   bool freshFactor = false;
+  bool asWindow = false;  // worker factors taken when ready, never waited for
   bool trace = false;
   std::string levels;
   double setupMs = 0;
@@ -169,12 +170,18 @@ struct BenchRun {
 // The settings and setup lines, the stepping, and the figures; the exit code.
 int benchAndPrint(Simulator& simulator, const BenchRun& run, std::optional<double> firstStepMs) {
   const FemModel& model = simulator.model();
+  if (run.asWindow) {
+    SimulationSettings window = simulator.settings();
+    window.reproducible = false;
+    simulator.setSettings(window);
+  }
   const SimulationSettings& settings = simulator.settings();
   std::cout << "threads=" << workerCount() << " levels=" << run.levels
             << " integrator=" << integratorName(settings.integrator) << " dt=" << settings.timeStep
             << " steps=" << run.steps << " warmup=" << FemBenchOptions{}.warmupSteps
             << " paint_every=" << run.paintEvery << (run.paintDensity ? " paint_field=density" : "")
-            << (run.freshFactor ? " fresh_factor=1" : "") << '\n'
+            << (run.freshFactor ? " fresh_factor=1" : "") << (run.asWindow ? " as_window=1" : "")
+            << '\n'
             << "setup_ms=" << ms(run.setupMs) << " control_points=" << model.numControlPoints()
             << " nodes=" << model.numNodes() << " fixed=" << fixedCount(simulator) << '\n';
   std::cout.flush();
@@ -368,6 +375,7 @@ int benchFemCommand(const CliArgs& args, std::string& file) {
   run.paintDensity = field == "density";
   if (args.has("paint-field") && run.paintEvery == 0)
     throw UsageError("--paint-field chooses what the dabs paint: it needs --paint-every");
+  run.asWindow = args.has("as-window");
   run.trace = args.has("trace");
   if (run.freshFactor && run.paintEvery == 0)
     throw UsageError("--fresh-factor refactors after each dab: it needs --paint-every");

@@ -157,6 +157,16 @@ TEST_F(BenchFemCliTest, BenchFemTracesStepsAndRefactorsForEveryDabWhenAsked) {
   expectBadInput("bench fem " + kBlock + " --steps 2 --fresh-factor", "needs --paint-every");
 }
 
+TEST_F(BenchFemCliTest, BenchFemStepsAsTheWindowWhenAsked) {
+  // The window's preconditioner takes factors made on a worker when they are ready
+  // (SystemPreconditioner.TheWindowTakesTheElementsOwnStiffnessAsSoonAsItIsReady); the header
+  // says that this run did so.
+  CliResult result;
+  const std::map<std::string, double> c = bench(kBlock + " --steps 3 --as-window", &result);
+  EXPECT_NE(result.out.find(" paint_every=0 as_window=1\n"), std::string::npos) << result.out;
+  EXPECT_GT(c.at("cg_iterations"), 0);
+}
+
 TEST_F(BenchFemCliTest, BenchFemRunsAScene) {
   CliResult result;
   const std::map<std::string, double> v =
