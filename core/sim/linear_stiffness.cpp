@@ -63,7 +63,6 @@ LameParameters meanLame(const FemMesh& mesh, std::span<const LameParameters> lam
   return mean;
 }
 
-
 }  // namespace
 
 SparseMatrix reduceNodeBlocks(const NodeBlockRows& K, const SparseMatrix& A) {
