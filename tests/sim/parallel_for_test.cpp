@@ -13,8 +13,8 @@
 namespace sculpt {
 namespace {
 
-// Runs one loop over n indices and checks that each was visited exactly once, by the worker
-// that owns its chunk.
+// Runs one loop over n indices and checks that each was visited exactly once, and that each
+// chunk index was handed out once (whichever pool thread ran it).
 void expectEachIndexOnce(uint32_t n, uint32_t minParallel) {
   std::vector<std::atomic<int>> visits(n);
   std::vector<std::atomic<int>> chunkOwner(workerCount());
