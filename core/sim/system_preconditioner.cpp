@@ -136,7 +136,8 @@ SparseMatrix restrictToFree(const SparseMatrix& S, const std::vector<int>& freeD
 // points one B-spline support further than the stand-in does; those entries are left out (per
 // axis the cubic B-spline Gram entry at that distance is 1/2416 of the diagonal), so that S's
 // pattern, and its ordering and symbolic analysis, are known once K~lin is.
-SparseMatrix systemMatrix(const SparseMatrix& stiffness, const SystemPreconditioner::Request& request) {
+SparseMatrix systemMatrix(const SparseMatrix& stiffness,
+                          const SystemPreconditioner::Request& request) {
   SparseMatrix S = request.scales[2] * stiffness;
   const SparseMatrix& inertia = request.inertia;  // added to the diagonal of each 3x3 block
   if (inertia.nonZeros() == 0) return S;
