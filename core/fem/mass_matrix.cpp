@@ -7,6 +7,7 @@
 #include <utility>
 #include <vector>
 
+#include "fem/node_slots.h"
 #include "fem/quadrature.h"
 #include "fem/trilinear_shape.h"
 #include "subdiv/tricubic_patch.h"
@@ -141,26 +142,13 @@ Columns nodeMatrixColumns(const FemMesh& mesh, std::span<const double> weights,
     for (uint32_t q = mesh.gaussBegin(e); q < mesh.gaussBegin(e) + mesh.gaussCount(e); ++q)
       if (weights[q] != 0.0) empty[e] = 0;
   }
-  // Each node's (element, local node) slots. A node repeated in an element (a pyramid's apex)
-  // has a slot for each of its places there, and the element's columns for both add up.
-  std::vector<uint32_t> slotsBegin(numNodes + 1, 0);
-  for (uint32_t e = 0; e < numElements; ++e)
-    if (!empty[e])
-      for (uint32_t j : mesh.elementNodes(e)) ++slotsBegin[j + 1];
-  for (uint32_t j = 0; j < numNodes; ++j) slotsBegin[j + 1] += slotsBegin[j];
-  std::vector<std::pair<uint32_t, uint32_t>> slots(slotsBegin.back());
-  {
-    std::vector<uint32_t> cursor(slotsBegin.begin(), slotsBegin.end() - 1);
-    for (uint32_t e = 0; e < numElements; ++e) {
-      if (empty[e]) continue;
-      const std::span<const uint32_t> ids = mesh.elementNodes(e);
-      for (uint32_t b = 0; b < ids.size(); ++b) slots[cursor[ids[b]]++] = {e, b};
-    }
-  }
+  // A node repeated in an element (a pyramid's apex) has a slot for each of its places there,
+  // and the element's columns for both add up.
+  const NodeSlots around = nodeSlots(mesh, empty);
   const auto nodeColumn = [&](uint32_t j, Accumulator& acc, unsigned) {
     alignas(32) double column[kTricubicNodes];
-    for (uint32_t s = slotsBegin[j]; s < slotsBegin[j + 1]; ++s) {
-      const auto [e, b] = slots[s];
+    for (uint32_t s = around.begin[j]; s < around.begin[j + 1]; ++s) {
+      const auto [e, b] = around.slots[s];
       const double* w = weights.data() + mesh.gaussBegin(e);
       const std::span<const uint32_t> ids = mesh.elementNodes(e);
       if (e < mesh.numTricubic()) {

@@ -10,6 +10,7 @@
 #include <utility>
 #include <vector>
 
+#include "fem/node_slots.h"
 #include "fem/tricubic_kernel.h"
 #include "sim/node_block_rows.h"
 
@@ -28,18 +29,8 @@ struct NodeStiffness {
 };
 
 NodeStiffness elementNodePattern(const FemMesh& mesh) {
-  const uint32_t numNodes = mesh.numNodes(), numElements = mesh.numElements();
-  // The elements around each node, row by row.
-  std::vector<uint32_t> aroundBegin(size_t(numNodes) + 1, 0);
-  for (uint32_t e = 0; e < numElements; ++e)
-    for (uint32_t n : mesh.elementNodes(e)) ++aroundBegin[n + 1];
-  std::partial_sum(aroundBegin.begin(), aroundBegin.end(), aroundBegin.begin());
-  std::vector<uint32_t> around(aroundBegin.back());
-  {
-    std::vector<uint32_t> next(aroundBegin.begin(), aroundBegin.end() - 1);
-    for (uint32_t e = 0; e < numElements; ++e)
-      for (uint32_t n : mesh.elementNodes(e)) around[next[n]++] = e;
-  }
+  const uint32_t numNodes = mesh.numNodes();
+  const NodeSlots around = nodeSlots(mesh);
   NodeStiffness result;
   NodeBlockRows& K = result.K;
   result.diagonal.resize(numNodes);
@@ -47,8 +38,8 @@ NodeStiffness elementNodePattern(const FemMesh& mesh) {
   std::vector<uint32_t> seenBy(numNodes, ~0u);
   for (uint32_t n = 0; n < numNodes; ++n) {
     const size_t rowBegin = K.column.size();
-    for (uint32_t k = aroundBegin[n]; k < aroundBegin[n + 1]; ++k)
-      for (uint32_t m : mesh.elementNodes(around[k]))
+    for (uint32_t k = around.begin[n]; k < around.begin[n + 1]; ++k)
+      for (uint32_t m : mesh.elementNodes(around.slots[k].first))
         if (seenBy[m] != n) {
           seenBy[m] = n;
           K.column.push_back(m);
