@@ -65,56 +65,6 @@ LameParameters meanLame(const FemMesh& mesh, std::span<const LameParameters> lam
 
 }  // namespace
 
-SparseMatrix reduceNodeBlocks(const NodeBlockRows& K, const SparseMatrix& A) {
-  // S_ij = sum_nm A_ni K_nm A_mj on 3x3 blocks, in two sparse passes with dense row
-  // accumulators: T = K A row by row, then S = A^T T. As scalar sparse products it took 4x
-  // longer, most of a first step (block10 at K = 1: 260 ms).
-  const uint32_t numNodes = K.numNodes();
-  const Eigen::Index numControl = A.cols();
-  // A dense accumulator over the control points.
-  DenseAccumulator<Eigen::Matrix3d> sum(size_t(numControl), Eigen::Matrix3d::Zero());
-
-  // T = K A: per node n, the blocks T_nj = sum_m K_nm A_mj.
-  using RowSparseMatrix = Eigen::SparseMatrix<double, Eigen::RowMajor>;
-  const RowSparseMatrix rowsOfA = A;
-  std::vector<size_t> tBegin(size_t(numNodes) + 1, 0);
-  std::vector<uint32_t> tColumn;
-  std::vector<Eigen::Matrix3d> tBlock;
-  for (uint32_t n = 0; n < numNodes; ++n) {
-    for (uint32_t k = K.begin[n]; k < K.begin[n + 1]; ++k)
-      for (RowSparseMatrix::InnerIterator it(rowsOfA, K.column[k]); it; ++it)
-        sum.add(uint32_t(it.col()), it.value() * K.block[k]);
-    sum.drain([&](uint32_t j, const Eigen::Matrix3d& block) {
-      tColumn.push_back(j);
-      tBlock.push_back(block);
-    });
-    tBegin[n + 1] = tColumn.size();
-  }
-
-  // S = A^T T: control row i gathers A_ni T_n over the nodes n of A's column i. S is symmetric,
-  // so row i's blocks, transposed, are column i's: column 3i + c holds S_ij(c, r) at row 3j + r.
-  SparseMatrix S(3 * numControl, 3 * numControl);
-  S.reserve(Eigen::Index(tColumn.size()) * 9);  // a guess; the matrix grows as needed
-  std::vector<std::pair<uint32_t, Eigen::Matrix3d>> rowBlocks;
-  for (Eigen::Index i = 0; i < numControl; ++i) {
-    for (SparseMatrix::InnerIterator it(A, i); it; ++it) {
-      const size_t n = size_t(it.row());
-      for (size_t k = tBegin[n]; k < tBegin[n + 1]; ++k)
-        sum.add(tColumn[k], it.value() * tBlock[k]);
-    }
-    sum.sortTouched();
-    rowBlocks.clear();
-    sum.drain([&](uint32_t j, const Eigen::Matrix3d& block) { rowBlocks.emplace_back(j, block); });
-    for (int c = 0; c < 3; ++c) {
-      S.startVec(3 * i + c);
-      for (const auto& [j, block] : rowBlocks)
-        for (int r = 0; r < 3; ++r) S.insertBack(3 * Eigen::Index(j) + r, 3 * i + c) = block(c, r);
-    }
-  }
-  S.finalize();
-  return S;
-}
-
 Eigen::Matrix<double, 24, 24> linearElementStiffness(const FemMesh& mesh,
                                                      std::span<const LameParameters> lame,
                                                      uint32_t e) {
@@ -161,8 +111,9 @@ SparseMatrix reducedLinearStiffness(const FemMesh& mesh, std::span<const LamePar
   // [0.65, 1.02] (docs/fem.md, "The implicit solver's preconditioner").
   const double standIn[2] = {0.5 + kStandInSpread * (gauss2.points[0] - 0.5),
                              0.5 + kStandInSpread * (gauss2.points[1] - 0.5)};
-  std::vector<std::vector<uint32_t>> neighbours(mesh.numNodes());
-  std::vector<std::vector<Eigen::Matrix3d>> blocks(mesh.numNodes());
+  const auto corners = [&](uint32_t e) { return elementCorners(mesh, e); };
+  SymmetricNodeBlocks nodes = symmetricNodePattern(mesh.numNodes(), mesh.numElements(), corners);
+  std::vector<uint32_t> where(mesh.numNodes());
   for (uint32_t e = 0; e < mesh.numElements(); ++e) {
     ElementStiffnessSum sum;
     const std::array<uint32_t, 8> ids = elementCorners(mesh, e);
@@ -188,30 +139,11 @@ SparseMatrix reducedLinearStiffness(const FemMesh& mesh, std::span<const LamePar
     }
     const ElementStiffness Ke = e < mesh.numTricubic() ? sum.matrix()
                                                        : linearElementStiffness(mesh, lame, e);
-    for (int a = 0; a < 8; ++a) {
-      std::vector<uint32_t>& row = neighbours[ids[a]];
-      std::vector<Eigen::Matrix3d>& rowBlocks = blocks[ids[a]];
-      for (int b = 0; b < 8; ++b) {
-        const auto at = std::find(row.begin(), row.end(), ids[b]);
-        const Eigen::Matrix3d block = Ke.block<3, 3>(3 * a, 3 * b);
-        if (at != row.end()) {
-          rowBlocks[size_t(at - row.begin())] += block;
-        } else {
-          row.push_back(ids[b]);
-          rowBlocks.push_back(block);
-        }
-      }
-    }
+    addUpperBlocks(nodes, ids, [&](int a, int b) -> Eigen::Matrix3d {
+      return Ke.block<3, 3>(3 * a, 3 * b);
+    }, where);
   }
-  NodeBlockRows K;
-  for (uint32_t n = 0; n < mesh.numNodes(); ++n) {
-    K.column.insert(K.column.end(), neighbours[n].begin(), neighbours[n].end());
-    K.block.insert(K.block.end(), blocks[n].begin(), blocks[n].end());
-    K.begin.push_back(uint32_t(K.column.size()));
-  }
-  neighbours = {};
-  blocks = {};
-  return reduceNodeBlocks(K, A);
+  return reduceNodeBlocks(mirrorUpperBlocks(nodes), A);
 }
 
 }  // namespace sculpt

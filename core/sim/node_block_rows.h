@@ -1,14 +1,19 @@
 #pragma once
 // What the stand-in and the elements' own rest stiffness share: a node matrix kept as 3x3
-// blocks row by row, its reduction to the control points, and a linear element's rest stiffness.
+// blocks row by row, assembled from symmetric element matrices and reduced to the control
+// points, and a linear element's rest stiffness.
 
 #include <Eigen/Core>
+#include <algorithm>
+#include <array>
 #include <cstdint>
+#include <numeric>
 #include <span>
 #include <vector>
 
 #include "fem/fem_mesh.h"
 #include "fem/mass_matrix.h"
+#include "fem/node_slots.h"
 
 namespace sculpt {
 
@@ -20,6 +25,73 @@ struct NodeBlockRows {
   std::vector<Eigen::Matrix3d> block;
   uint32_t numNodes() const { return uint32_t(begin.size() - 1); }
 };
+
+/// A node matrix being assembled from symmetric element matrices, zero at first: each node's
+/// row holds, in increasing order, every node it shares an element with; diagonal[n] is n's
+/// place in its own row. The elements add only the blocks on and above the diagonal
+/// (addUpperBlocks), half of them; mirrorUpperBlocks then writes the others, their transposes.
+struct SymmetricNodeBlocks {
+  NodeBlockRows K;
+  std::vector<uint32_t> diagonal;
+};
+
+/// The pattern of elements whose nodes are nodesOf(e), e < numElements.
+template <class NodesOf>
+SymmetricNodeBlocks symmetricNodePattern(uint32_t numNodes, uint32_t numElements,
+                                         const NodesOf& nodesOf) {
+  const NodeSlots around = nodeSlots(numNodes, numElements, nodesOf);
+  SymmetricNodeBlocks result;
+  NodeBlockRows& K = result.K;
+  result.diagonal.resize(numNodes);
+  K.begin.reserve(size_t(numNodes) + 1);
+  std::vector<uint32_t> seenBy(numNodes, ~0u);
+  for (uint32_t n = 0; n < numNodes; ++n) {
+    const size_t rowBegin = K.column.size();
+    for (uint32_t k = around.begin[n]; k < around.begin[n + 1]; ++k)
+      for (uint32_t m : nodesOf(around.slots[k].first))
+        if (seenBy[m] != n) {
+          seenBy[m] = n;
+          K.column.push_back(m);
+        }
+    const auto row = K.column.begin() + std::ptrdiff_t(rowBegin);
+    std::sort(row, K.column.end());
+    result.diagonal[n] = uint32_t(std::lower_bound(row, K.column.end(), n) - K.column.begin());
+    K.begin.push_back(uint32_t(K.column.size()));
+  }
+  K.block.assign(K.column.size(), Eigen::Matrix3d::Zero());
+  return result;
+}
+
+/// Adds the blocks on and above the diagonal of a symmetric element matrix on nodes `ids` (at
+/// most kTricubicNodes): blockOf(a, b) couples the element's nodes a and b. `where` (one entry
+/// per node) is scratch.
+template <class BlockOf>
+void addUpperBlocks(SymmetricNodeBlocks& nodes, std::span<const uint32_t> ids,
+                    const BlockOf& blockOf, std::vector<uint32_t>& where) {
+  const int count = int(ids.size());
+  std::array<int, kTricubicNodes> order;
+  std::iota(order.begin(), order.begin() + count, 0);
+  std::sort(order.begin(), order.begin() + count, [&](int a, int b) {
+    return ids[size_t(a)] < ids[size_t(b)];
+  });
+  NodeBlockRows& K = nodes.K;
+  for (int i = 0; i < count; ++i) {
+    const int a = order[size_t(i)];
+    const uint32_t n = ids[size_t(a)];
+    // The places of the nodes after n in n's row, without a search per node.
+    for (uint32_t k = nodes.diagonal[n]; k < K.begin[n + 1]; ++k) where[K.column[k]] = k;
+    for (int j = i; j < count; ++j) {
+      const int b = order[size_t(j)];
+      Eigen::Matrix3d& target = K.block[where[ids[size_t(b)]]];
+      target += blockOf(a, b);
+      // A node in two places of the element (a pyramid's apex) gets both blocks between them.
+      if (j != i && ids[size_t(b)] == n) target += blockOf(b, a);
+    }
+  }
+}
+
+/// The blocks below the diagonal, block (m, n) being block (n, m) transposed; returns K.
+NodeBlockRows& mirrorUpperBlocks(SymmetricNodeBlocks& nodes);
 
 /// S = (A x I3)^T K (A x I3), 3N by 3N (control point i, coordinate c at row 3i + c).
 SparseMatrix reduceNodeBlocks(const NodeBlockRows& K, const SparseMatrix& A);

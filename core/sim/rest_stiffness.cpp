@@ -6,11 +6,9 @@
 #include <cmath>
 #include <cstdint>
 #include <map>
-#include <numeric>
 #include <utility>
 #include <vector>
 
-#include "fem/node_slots.h"
 #include "fem/tricubic_kernel.h"
 #include "sim/node_block_rows.h"
 
@@ -18,77 +16,6 @@ namespace sculpt {
 namespace {
 
 using Block = Eigen::Matrix3d;
-
-// The elements' own stiffness on the nodes, zero at first: each node's row holds, in increasing
-// order, every node it shares an element with; diagonal[n] is n's place in its own row. The
-// rows are symmetric, so the elements add only the blocks on and above the diagonal, half of
-// them, and the ones below are their transposes.
-struct NodeStiffness {
-  NodeBlockRows K;
-  std::vector<uint32_t> diagonal;
-};
-
-NodeStiffness elementNodePattern(const FemMesh& mesh) {
-  const uint32_t numNodes = mesh.numNodes();
-  const NodeSlots around = nodeSlots(mesh);
-  NodeStiffness result;
-  NodeBlockRows& K = result.K;
-  result.diagonal.resize(numNodes);
-  K.begin.reserve(size_t(numNodes) + 1);
-  std::vector<uint32_t> seenBy(numNodes, ~0u);
-  for (uint32_t n = 0; n < numNodes; ++n) {
-    const size_t rowBegin = K.column.size();
-    for (uint32_t k = around.begin[n]; k < around.begin[n + 1]; ++k)
-      for (uint32_t m : mesh.elementNodes(around.slots[k].first))
-        if (seenBy[m] != n) {
-          seenBy[m] = n;
-          K.column.push_back(m);
-        }
-    const auto row = K.column.begin() + std::ptrdiff_t(rowBegin);
-    std::sort(row, K.column.end());
-    result.diagonal[n] = uint32_t(std::lower_bound(row, K.column.end(), n) - K.column.begin());
-    K.begin.push_back(uint32_t(K.column.size()));
-  }
-  K.block.assign(K.column.size(), Block::Zero());
-  return result;
-}
-
-// Adds the blocks on and above the diagonal of a symmetric element matrix on nodes `ids`:
-// blockOf(a, b) couples the element's nodes a and b. `where` (one entry per node) is scratch.
-template <class BlockOf>
-void addUpperBlocks(NodeStiffness& nodes, std::span<const uint32_t> ids, const BlockOf& blockOf,
-                    std::vector<uint32_t>& where) {
-  const int count = int(ids.size());
-  std::array<int, kTricubicNodes> order;
-  std::iota(order.begin(), order.begin() + count, 0);
-  std::sort(order.begin(), order.begin() + count, [&](int a, int b) {
-    return ids[size_t(a)] < ids[size_t(b)];
-  });
-  NodeBlockRows& K = nodes.K;
-  for (int i = 0; i < count; ++i) {
-    const int a = order[size_t(i)];
-    const uint32_t n = ids[size_t(a)];
-    // The places of the nodes after n in n's row, without a search per node.
-    for (uint32_t k = nodes.diagonal[n]; k < K.begin[n + 1]; ++k) where[K.column[k]] = k;
-    for (int j = i; j < count; ++j) {
-      const int b = order[size_t(j)];
-      Block& target = K.block[where[ids[size_t(b)]]];
-      target += blockOf(a, b);
-      // A node in two places of the element (a pyramid's apex) gets both blocks between them.
-      if (j != i && ids[size_t(b)] == n) target += blockOf(b, a);
-    }
-  }
-}
-
-// The blocks below the diagonal: block (m, n) is block (n, m) transposed. Row m's blocks below
-// its diagonal are those of the rows n < m that reach m, in increasing n.
-void mirrorUpperBlocks(NodeStiffness& nodes) {
-  NodeBlockRows& K = nodes.K;
-  std::vector<uint32_t> next(K.begin.begin(), K.begin.end() - 1);
-  for (uint32_t n = 0; n < K.numNodes(); ++n)
-    for (uint32_t k = nodes.diagonal[n] + 1; k < K.begin[n + 1]; ++k)
-      K.block[next[K.column[k]]++] = K.block[k].transpose();
-}
 
 // A tricubic element's rest stiffness, as the kernel computes it: its Hessian products with the
 // unit vectors at rotation I. An affine element of uniform material is lambda K_lambda + mu K_mu,
@@ -192,7 +119,8 @@ class TricubicStiffness {
 
 SparseMatrix reducedRestStiffness(const FemMesh& mesh, std::span<const LameParameters> lame,
                                   const SparseMatrix& A, const std::atomic<bool>* stop) {
-  NodeStiffness nodes = elementNodePattern(mesh);
+  SymmetricNodeBlocks nodes = symmetricNodePattern(
+      mesh.numNodes(), mesh.numElements(), [&](uint32_t e) { return mesh.elementNodes(e); });
   TricubicStiffness tricubic(mesh, lame);
   std::vector<uint32_t> where(mesh.numNodes());
   for (uint32_t e = 0; e < mesh.numTricubic(); ++e) {
@@ -214,8 +142,7 @@ SparseMatrix reducedRestStiffness(const FemMesh& mesh, std::span<const LameParam
                    [&](int a, int b) -> Block { return Ke.block<3, 3>(3 * a, 3 * b); }, where);
   }
   if (stop && *stop) return {};
-  mirrorUpperBlocks(nodes);
-  return reduceNodeBlocks(nodes.K, A);
+  return reduceNodeBlocks(mirrorUpperBlocks(nodes), A);
 }
 
 }  // namespace sculpt
