@@ -338,7 +338,9 @@ FemBenchFigures runFemBench(Simulator& simulator, const FemBenchOptions& options
     samples.push_back(millisecondsSince(start));
     if (options.trace)
       err << "step=" << i << " ms=" << ms(samples.back()) << " cg_iterations=" << report.iterations
-          << " elastic_pass_ms=" << ms(passSamples.back()) << '\n';
+          << " elastic_pass_ms=" << ms(passSamples.back())
+          << " barrier_elements=" << simulator.model().elastic().barrierElements()
+          << " factorizations=" << simulator.preconditionerStats().factorizations << '\n';
     iterations += report.iterations;
     figures.failed = figures.failed || !report.ok;
   }
