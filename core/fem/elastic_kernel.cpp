@@ -126,8 +126,8 @@ void ElasticKernel::resetRotations() {
 void ElasticKernel::setModel(ElasticModel model, const InversionBarrier& barrier) {
   model_ = model;
   barrier_ = barrier;
-  barrierSlot_.clear();
   barrierState_.clear();
+  barrierRecords_.clear();
   barrierElements_ = 0;
   barrierStale_ = false;
 }
@@ -167,24 +167,19 @@ uint32_t ElasticKernel::barrierElements() const {
 
 void ElasticKernel::refreshBarrier() const {
   if (!barrierStale_) return;
-  std::vector<BarrierRecord> records;
-  run(barrierNodes_, Mode::Gradient, nullptr, false, nullptr, nullptr, &records);
-  keepBarrierRecords(records);
+  run(barrierNodes_, Mode::Gradient, nullptr, false, nullptr, nullptr, &barrierRecords_);
+  keepBarrierRecords();
   barrierStale_ = false;
 }
 
-void ElasticKernel::keepBarrierRecords(const std::vector<BarrierRecord>& records) const {
-  barrierSlot_.assign(mesh_.numElements(), -1);
-  barrierState_.clear();
+void ElasticKernel::keepBarrierRecords() const {
+  barrierState_.assign(mesh_.numElements(), nullptr);
   barrierElements_ = 0;
-  for (const BarrierRecord& record : records) {
+  for (const BarrierRecord& record : barrierRecords_) {
     size_t offset = 0;
     for (uint32_t e : record.elements) {
-      const size_t size = e < mesh_.numTricubic() ? 9 * kTricubicGaussPoints : 9 * kLinearGaussPoints;
-      barrierSlot_[e] = int64_t(barrierState_.size());
-      barrierState_.insert(barrierState_.end(), record.states.begin() + ptrdiff_t(offset),
-                           record.states.begin() + ptrdiff_t(offset + size));
-      offset += size;
+      barrierState_[e] = record.states.data() + offset;
+      offset += 9 * size_t(e < mesh_.numTricubic() ? kTricubicGaussPoints : kLinearGaussPoints);
       ++barrierElements_;
     }
   }
@@ -273,9 +268,8 @@ void ElasticKernel::updateRotationsAndAddGradient(const Points& nodes, Points& g
     run(nodes, Mode::Gradient, &gradient, false, nullptr, rotations_.data());
     return;
   }
-  std::vector<BarrierRecord> records;
-  run(nodes, Mode::Gradient, &gradient, false, nullptr, rotations_.data(), &records);
-  keepBarrierRecords(records);
+  run(nodes, Mode::Gradient, &gradient, false, nullptr, rotations_.data(), &barrierRecords_);
+  keepBarrierRecords();
   barrierStale_ = false;
 }
 
@@ -306,9 +300,17 @@ double ElasticKernel::run(const Points& x, Mode mode, Points* out, bool withEner
   const unsigned workers = std::min<unsigned>(workerCount(), std::max(1u, numElements / 32));
   if (out) workerBuffers_.resize(workers);
   std::vector<double> workerEnergy(workers, 0.0);
-  if (records) records->assign(workers, {});
+  if (records) {
+    records->resize(workers);
+    for (BarrierRecord& record : *records) {  // kept with their capacity: no reallocation
+      record.elements.clear();
+      record.states.clear();
+    }
+  }
   const InversionBarrier* barrier = model_ == ElasticModel::Barrier ? &barrier_ : nullptr;
-  const bool hessianBarrier = mode == Mode::HessianProduct && !barrierSlot_.empty();
+  const bool hessianBarrier = mode == Mode::HessianProduct && !barrierState_.empty();
+  // Records for the Hessian products keep only what they need (barrier_stress.h).
+  const bool recordCurvature = records && !recordAll && barrier && !barrier->exactHessian;
   // The kernels take displacements in gradient mode (x holds positions there).
   loadSource(x, withRestTerm);
   // Equal work per worker: a tricubic element costs about kTricubicCost linear ones.
@@ -350,8 +352,8 @@ double ElasticKernel::run(const Points& x, Mode mode, Points* out, bool withEner
         BarrierArgs barrierArgs;
         barrierArgs.settings = barrier;
         if (records) barrierArgs.record = barrierRecord;
-        if (barrier && hessianBarrier && barrierSlot_[e] >= 0)
-          barrierArgs.state = barrierState_.data() + barrierSlot_[e];
+        barrierArgs.recordCurvature = recordCurvature;
+        if (barrier && hessianBarrier) barrierArgs.state = barrierState_[e];
         if (tricubic) {
           // The rest data (up to 5.6 KB per element) streams from memory once the model
           // outgrows the caches (K = 3): the kernel fetches the next element's while it

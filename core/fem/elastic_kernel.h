@@ -27,6 +27,9 @@ namespace sculpt {
 class ElasticKernel {
  public:
   explicit ElasticKernel(const FemMesh& mesh);
+  // The barrier's states point into the kernel's own records.
+  ElasticKernel(const ElasticKernel&) = delete;
+  ElasticKernel& operator=(const ElasticKernel&) = delete;
 
   /// R_e from the current node positions (#nodes by 3).
   void updateRotations(const Points& nodes);
@@ -95,8 +98,8 @@ class ElasticKernel {
   double run(const Points& x, Mode mode, Points* out, bool withEnergy,
              double* perElement = nullptr, Eigen::Matrix3d* newRotations = nullptr,
              std::vector<BarrierRecord>* records = nullptr, bool recordAll = false) const;
-  // barrierSlot_ and barrierState_ from the workers' records of a rotation update.
-  void keepBarrierRecords(const std::vector<BarrierRecord>& records) const;
+  // barrierState_ from the workers' records of a rotation update (barrierRecords_).
+  void keepBarrierRecords() const;
   // Records the barrier's state at the last updateRotations' nodes if it has not been yet: that
   // update only finds the rotations (it mostly precedes an energy query), and the record costs a
   // whole element pass, so it is made when a Hessian product first needs it.
@@ -120,9 +123,10 @@ class ElasticKernel {
   std::vector<Eigen::Matrix3d> rotations_;
   ElasticModel model_ = ElasticModel::Corotated;  // the Simulator sets the scene's
   InversionBarrier barrier_;
-  // Per element the start of its recorded R^T F in barrierState_, or -1 (nothing recorded).
-  mutable std::vector<int64_t> barrierSlot_;
-  mutable std::vector<double> barrierState_;
+  // The last rotation update's records (h of barrier_stress.h, or R^T F with the exact
+  // Hessian), and per element where its record starts in them (null: nothing recorded).
+  mutable std::vector<BarrierRecord> barrierRecords_;
+  mutable std::vector<const double*> barrierState_;
   mutable uint32_t barrierElements_ = 0;
   mutable bool barrierStale_ = false;  // barrierNodes_ are newer than the record
   Points barrierNodes_;
