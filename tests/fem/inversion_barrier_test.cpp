@@ -3,8 +3,8 @@
 // threshold 0.5 at every Gauss point), perturbed, rotated and with one corner region turned
 // inside out: finite differences of the energy match the gradient, finite differences of the
 // gradient match the exact Hessian, the solvers' Hessian is symmetric and positive
-// semi-definite and agrees with the exact one where the term it drops vanishes, and states that keep half their volume are those of the co-rotated model, bit
-// for bit.
+// semi-definite and agrees with the exact one where the term it drops vanishes, and states that
+// keep half their volume are those of the co-rotated model, bit for bit.
 
 #include <gtest/gtest.h>
 
