@@ -14,15 +14,12 @@ namespace sculpt {
 /// What a kernel call needs of the barrier. Gradient mode: when `record` is non-null the kernel
 /// writes A at every Gauss point there (with or without `settings`: the Jacobian report uses it) (9
 /// values per point, lanes fastest, in the kernel's Gauss-point blocks) and sets `active` when some
-/// point lies below the threshold; with `recordCurvature` (and `settings`) it writes
-/// h = sqrt(psi''(J)) cof(A) instead (zero above the threshold), all that the Hessian product
-/// needs unless the settings ask for the exact Hessian. Hessian mode: `state` is what a gradient
-/// call recorded for this element (h, or A with exactHessian); null means no point of it was
-/// below the threshold, so the barrier adds nothing to its Hessian.
+/// point lies below the threshold. Hessian mode: `state` is that record of this element turned
+/// into h by recordCurvature (A itself when the settings ask for the exact Hessian); null means
+/// no point of it was below the threshold, so the barrier adds nothing to its Hessian.
 struct BarrierArgs {
   const InversionBarrier* settings = nullptr;  ///< null: the corotated model, no barrier
   double* record = nullptr;
-  bool recordCurvature = false;
   bool active = false;
   const double* state = nullptr;
 };
@@ -66,15 +63,11 @@ struct Lanes {
 
 /// Gradient mode at the lanes' A (= R^T F): adds dpsi/dA to S and returns psi per lane (zero
 /// where J >= threshold). `bulk` is V (lambda + 2 mu / 3) per lane. `any` is set when a lane
-/// is below the threshold. With `curvature`, sets it to h = sqrt(psi'') cof(A) (the Hessian's
-/// psi'' cof (x) cof is h (x) h).
+/// is below the threshold.
 template <class V>
 [[gnu::noinline]] V addBarrierStress(const V (&A)[3][3], const V& bulk, const InversionBarrier& b,
-                                     V (&S)[3][3], bool& any, V (*curvature)[3] = nullptr) {
+                                     V (&S)[3][3], bool& any) {
   const V t = (b.threshold - barrier_detail::determinant(A)).max(0.0);
-  if (curvature)
-    for (int r = 0; r < 3; ++r)
-      for (int m = 0; m < 3; ++m) curvature[r][m] = V::Zero();
   if (!(t > 0.0).any()) return V::Zero();
   any = true;
   V cof[3][3];
@@ -83,15 +76,21 @@ template <class V>
   const V slope = -3.0 * c * t * t;  // dpsi/dJ
   for (int r = 0; r < 3; ++r)
     for (int m = 0; m < 3; ++m) S[r][m] += slope * cof[r][m];
-  if (curvature) {
-    const V root = (6.0 * c * t).sqrt();  // psi'' = 6 c t
-    for (int r = 0; r < 3; ++r)
-      for (int m = 0; m < 3; ++m) curvature[r][m] = root * cof[r][m];
-  }
   return c * t * t * t;
 }
 
-/// Hessian mode: adds the barrier's second derivative at the recorded A applied to the
+/// Hessian mode from h = sqrt(psi'') cof(A) (recordCurvature): adds (h : dA) h, the Hessian the
+/// solvers keep, psi'' cof (x) cof, applied to dA.
+template <class V>
+[[gnu::noinline]] void addBarrierCurvature(const V (&h)[3][3], const V (&dA)[3][3], V (&S)[3][3]) {
+  V dJ = V::Zero();
+  for (int r = 0; r < 3; ++r)
+    for (int m = 0; m < 3; ++m) dJ += h[r][m] * dA[r][m];
+  for (int r = 0; r < 3; ++r)
+    for (int m = 0; m < 3; ++m) S[r][m] += dJ * h[r][m];
+}
+
+/// Hessian mode, exact: adds the barrier's second derivative at the recorded A applied to the
 /// direction's dA to S (see InversionBarrier::exactHessian for what is kept).
 template <class V>
 [[gnu::noinline]] void addBarrierHessian(const V (&A)[3][3], const V (&dA)[3][3], const V& bulk,
@@ -124,44 +123,26 @@ template <class V>
 
 /// One kernel group of Gauss points (the lanes of V): with `gradientMode`, A = M + R^T (M the
 /// lanes' R^T grad u) gets its barrier stress added to S, is recorded at `block` (9 values per
-/// lane, lanes fastest; A, or h with recordCurvature) and psi is returned; otherwise (Hessian
-/// mode, M the direction's R^T grad d) the recorded state's second derivative along M is added.
-/// Zero when nothing acts. Inlined into the kernels: nearly every point is far above the
-/// threshold, and there J alone (a few products on values in registers) decides; the stress is
-/// computed out of line. The Hessian from h is (h : M) h, a few products, also inline.
+/// lane, lanes fastest) and psi is returned; otherwise (Hessian mode, M the direction's
+/// R^T grad d) the recorded state's second derivative along M is added. Zero when nothing acts.
+/// Inlined into the kernels: nearly every point is far above the threshold, and there J alone
+/// (a few products on values in registers) decides; the stress is computed out of line.
 template <class V>
 [[gnu::always_inline]] inline V applyBarrier(BarrierArgs& b, const V (&M)[3][3],
                                              const Eigen::Matrix3d& R, const V& volumeLambda,
                                              const V& volumeMu, bool gradientMode, size_t block,
                                              V (&S)[3][3]) {
   constexpr int kLanes = V::SizeAtCompileTime;
-  const auto recorded = [&](int rc) -> double* {
-    return b.record + (block * 9 + size_t(rc)) * kLanes;
-  };
-  const bool curvatureRecord = b.record && b.recordCurvature && b.settings;
   V A[3][3];
   if (gradientMode) {
     for (int r = 0; r < 3; ++r)
       for (int c = 0; c < 3; ++c) A[r][c] = M[r][c] + R(c, r);
-    if (b.record && !curvatureRecord)
-      for (int rc = 0; rc < 9; ++rc) Eigen::Map<V>(recorded(rc)) = A[rc / 3][rc % 3];
+    if (b.record)
+      for (int rc = 0; rc < 9; ++rc)
+        Eigen::Map<V>(b.record + (block * 9 + size_t(rc)) * kLanes) = A[rc / 3][rc % 3];
     if (!b.settings) return V::Zero();
-    if (!(barrier_detail::determinant(A) < b.settings->threshold).any()) {
-      if (curvatureRecord)
-        for (int rc = 0; rc < 9; ++rc) Eigen::Map<V>(recorded(rc)) = V::Zero();
-      return V::Zero();
-    }
+    if (!(barrier_detail::determinant(A) < b.settings->threshold).any()) return V::Zero();
   } else if (!b.state || !b.settings) {
-    return V::Zero();
-  } else if (!b.settings->exactHessian) {
-    V h[3][3], dJ = V::Zero();
-    for (int r = 0; r < 3; ++r)
-      for (int c = 0; c < 3; ++c) {
-        h[r][c] = Eigen::Map<const V>(b.state + (block * 9 + size_t(r * 3 + c)) * kLanes);
-        dJ += h[r][c] * M[r][c];
-      }
-    for (int r = 0; r < 3; ++r)
-      for (int c = 0; c < 3; ++c) S[r][c] += dJ * h[r][c];
     return V::Zero();
   }
   // Out of line on copies: the kernel's own S and M, whose addresses never leave it, can then
@@ -177,17 +158,22 @@ template <class V>
     }
   const V bulk = volumeLambda + (2.0 / 3.0) * volumeMu;
   V psi = V::Zero();
-  if (gradientMode && curvatureRecord) {
-    barrier_detail::Lanes<V> h;
-    psi = addBarrierStress(a.v, bulk, *b.settings, s.v, b.active, h.v);
-    for (int rc = 0; rc < 9; ++rc) Eigen::Map<V>(recorded(rc)) = h.v[rc / 3][rc % 3];
-  } else if (gradientMode) {
+  if (gradientMode)
     psi = addBarrierStress(a.v, bulk, *b.settings, s.v, b.active);
-  } else
+  else if (b.settings->exactHessian)
     addBarrierHessian(a.v, m.v, bulk, *b.settings, s.v);
+  else
+    addBarrierCurvature(a.v, m.v, s.v);
   for (int r = 0; r < 3; ++r)
     for (int c = 0; c < 3; ++c) S[r][c] = s.v[r][c];
   return psi;
 }
+
+/// Turns an element's record of A at `points` Gauss points (groups of `lanes`, as the kernels
+/// write it) into h = sqrt(psi''(J)) cof(A) in place, zero at points above the threshold: all a
+/// Hessian product needs unless the exact Hessian is asked for, so that cof(A) is not found again
+/// at every product. `volumeLambda` and `volumeMu` are the points' V lambda and V mu.
+void recordCurvature(double* record, int points, int lanes, const double* volumeLambda,
+                     const double* volumeMu, const InversionBarrier& barrier);
 
 }  // namespace sculpt

@@ -310,7 +310,7 @@ double ElasticKernel::run(const Points& x, Mode mode, Points* out, bool withEner
   const InversionBarrier* barrier = model_ == ElasticModel::Barrier ? &barrier_ : nullptr;
   const bool hessianBarrier = mode == Mode::HessianProduct && !barrierState_.empty();
   // Records for the Hessian products keep only what they need (barrier_stress.h).
-  const bool recordCurvature = records && !recordAll && barrier && !barrier->exactHessian;
+  const bool curvature = records && !recordAll && barrier && !barrier->exactHessian;
   // The kernels take displacements in gradient mode (x holds positions there).
   loadSource(x, withRestTerm);
   // Equal work per worker: a tricubic element costs about kTricubicCost linear ones.
@@ -352,7 +352,6 @@ double ElasticKernel::run(const Points& x, Mode mode, Points* out, bool withEner
         BarrierArgs barrierArgs;
         barrierArgs.settings = barrier;
         if (records) barrierArgs.record = barrierRecord;
-        barrierArgs.recordCurvature = recordCurvature;
         if (barrier && hessianBarrier) barrierArgs.state = barrierState_[e];
         if (tricubic) {
           // The rest data (up to 5.6 KB per element) streams from memory once the model
@@ -377,6 +376,17 @@ double ElasticKernel::run(const Points& x, Mode mode, Points* out, bool withEner
         energy += elementEnergy;
         if (perElement) perElement[e] = elementEnergy;
         if (barrierArgs.record && (barrierArgs.active || recordAll)) {
+          if (curvature) {
+            const bool t = tricubic;
+            const size_t l = e - numTricubic;
+            const double* volumeLambda =
+                t ? tricubicRest_.data() + tricubicRestOffset_[e] +
+                        size_t(tricubicRestSize(tricubicAffine_[e])) - 128
+                  : linearVolumeLambda_.data() + l * 8;
+            const double* volumeMu = t ? volumeLambda + 64 : linearVolumeMu_.data() + l * 8;
+            recordCurvature(barrierRecord, t ? kTricubicGaussPoints : kLinearGaussPoints,
+                            t ? 4 : 8, volumeLambda, volumeMu, *barrier);
+          }
           BarrierRecord& record = (*records)[worker];
           record.elements.push_back(e);
           record.states.insert(record.states.end(), barrierRecord,
