@@ -99,6 +99,7 @@ void Simulator::setState(const Points& positions, const Points& velocities) {
   velocity_ = velocities;
   previousStep_ = 0;
   lastIncrement_.resize(0, 3);
+  implicitStart_.clear();
   energyBudget_ = kineticEnergy() + elasticEnergy();
 }
 
@@ -205,12 +206,10 @@ Points Simulator::hessianProduct(const Points& dx, bool withInertia) {
 }
 
 CgResult Simulator::newtonStep(const Points& gradient, bool withInertia, double tolerance,
-                               Points& dx) {
+                               Points& dx, const Points* start) {
   const Eigen::VectorXd b = -gather(gradient, freeDofs_);
-  // From zero: CG's first residual then costs no Hessian product. A warm start from the
-  // previous step's correction saved at most the iterations that product costs (40 steps of
-  // block10 at K = 1: 4.2 iterations + 1 product against 4.5; the bunny: 5.0 + 1 against 6.0).
-  Eigen::VectorXd x = Eigen::VectorXd::Zero(b.size());
+  // From zero, CG's first residual costs no Hessian product.
+  Eigen::VectorXd x = start ? gather(*start, freeDofs_) : Eigen::VectorXd::Zero(b.size());
   Points direction = Points::Zero(position_.rows(), 3);
   const LinearOperator op = [&](const Eigen::VectorXd& in, Eigen::VectorXd& out) {
     direction.setZero();
@@ -333,7 +332,10 @@ Simulator::Attempt Simulator::implicitSubstep(double h) {
   }
   preconditioner_->update(model_, 1.0 / (h * h), 1.0 / h, 1.0, freeDofs_);
   Points dx;
-  const CgResult cg = newtonStep(g, true, settings_.implicitTolerance, dx);
+  const Points guess = implicitStart_.start(h, settings_.extrapolatedStartIterations);
+  const CgResult cg = newtonStep(g, true, settings_.implicitTolerance, dx,
+                                 guess.rows() == position_.rows() ? &guess : nullptr);
+  implicitStart_.remember(dx, h, cg.iterations);
   a.iterations = cg.iterations;
   a.residual = cg.relativeResidual;
   if (cg.indefinite && !cg.converged) {
@@ -458,6 +460,7 @@ StepReport Simulator::step() {
     previousStep_ = savedPreviousStep;
     energyBudget_ = savedBudget;
     lastIncrement_.resize(0, 3);
+    implicitStart_.clear();
     if (hopeless) break;  // smaller steps cannot repair non-finite inputs
   }
   report.ok = false;
