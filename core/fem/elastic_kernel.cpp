@@ -353,6 +353,7 @@ double ElasticKernel::run(const Points& x, Mode mode, Points* out, bool withEner
         barrierArgs.settings = barrier;
         if (records) barrierArgs.record = barrierRecord;
         if (barrier && hessianBarrier) barrierArgs.state = barrierState_[e];
+        const double *volumeLambda, *volumeMu;  // the Gauss points' V lambda and V mu
         if (tricubic) {
           // The rest data (up to 5.6 KB per element) streams from memory once the model
           // outgrows the caches (K = 3): the kernel fetches the next element's while it
@@ -365,6 +366,8 @@ double ElasticKernel::run(const Points& x, Mode mode, Points* out, bool withEner
               tricubicAxisRows_[e][0] >= 0 ? tricubicAxisRows_[e].data() : nullptr);
           elementEnergy = tricubicElementKernel(ue, packed, R, withRestTerm, withEnergy, gradient,
                                                 &barrierArgs);
+          volumeLambda = packed.volumeLambda;
+          volumeMu = packed.volumeMu;
         } else {
           const size_t l = e - numTricubic;
           const LinearPacked packed{linearShapeGradient_.data() + l * 192,
@@ -372,21 +375,15 @@ double ElasticKernel::run(const Points& x, Mode mode, Points* out, bool withEner
                                     linearVolumeMu_.data() + l * 8};
           elementEnergy = linearElementKernel(ue, packed, R, withRestTerm, withEnergy, gradient,
                                               &barrierArgs);
+          volumeLambda = packed.volumeLambda;
+          volumeMu = packed.volumeMu;
         }
         energy += elementEnergy;
         if (perElement) perElement[e] = elementEnergy;
         if (barrierArgs.record && (barrierArgs.active || recordAll)) {
-          if (curvature) {
-            const bool t = tricubic;
-            const size_t l = e - numTricubic;
-            const double* volumeLambda =
-                t ? tricubicRest_.data() + tricubicRestOffset_[e] +
-                        size_t(tricubicRestSize(tricubicAffine_[e])) - 128
-                  : linearVolumeLambda_.data() + l * 8;
-            const double* volumeMu = t ? volumeLambda + 64 : linearVolumeMu_.data() + l * 8;
-            recordCurvature(barrierRecord, t ? kTricubicGaussPoints : kLinearGaussPoints,
-                            t ? 4 : 8, volumeLambda, volumeMu, *barrier);
-          }
+          if (curvature)
+            recordCurvature(barrierRecord, tricubic ? kTricubicGaussPoints : kLinearGaussPoints,
+                            tricubic ? 4 : 8, volumeLambda, volumeMu, *barrier);
           BarrierRecord& record = (*records)[worker];
           record.elements.push_back(e);
           record.states.insert(record.states.end(), barrierRecord,
