@@ -1,5 +1,6 @@
 #include "sim/conjugate_gradient.h"
 
+#include <algorithm>
 #include <cmath>
 
 namespace sculpt {
@@ -22,8 +23,18 @@ CgResult solve(const LinearOperator& A, const LinearOperator& preconditioner,
   if (x.isZero(0.0)) {
     r = b;
   } else {
+    // The start scaled to the least energy 1/2 x^T A x - b^T x along it, with the product its
+    // residual needs anyway: never further from the solution (in A's norm) than the start or
+    // zero. A start that points away from the solution becomes zero.
     A(x, Ap);
-    r = b - Ap;
+    const double xAx = x.dot(Ap), scale = xAx > 0 ? std::max(0.0, b.dot(x) / xAx) : 0.0;
+    if (!std::isfinite(scale)) {
+      x.setZero();
+      r = b;
+    } else {
+      x *= scale;
+      r = b - scale * Ap;
+    }
   }
   result.relativeResidual = r.norm() / bNorm;
   if (result.relativeResidual <= tolerance) {

@@ -1,6 +1,6 @@
 // Preconditioned conjugate gradients: the solution of a small SPD system against a direct solve,
 // and right-hand sides near the largest doubles (forces of 1e200 N) solved to the same bits as the
-// same system scaled by a power of two.
+// same system scaled by a power of two, and the scaling of a start.
 
 #include "sim/conjugate_gradient.h"
 
@@ -78,6 +78,25 @@ TEST(ConjugateGradient, AZeroStartAppliesTheOperatorOncePerIteration) {
   ASSERT_TRUE(warmStart.converged);
   EXPECT_EQ(products, warmStart.iterations + 1);
   EXPECT_LT((warm - x).norm(), 1e-8 * x.norm());
+}
+
+// A start is scaled to the least energy along it: twice the solution becomes the solution (no
+// iteration), and minus the solution becomes zero, no worse than starting there.
+TEST(ConjugateGradient, AStartIsScaledToTheLeastEnergyAlongIt) {
+  const Eigen::MatrixXd A = spdMatrix(30);
+  Eigen::VectorXd b(30);
+  for (int i = 0; i < 30; ++i) b[i] = std::cos(0.3 * i) - 0.1;
+  const Eigen::VectorXd solution = A.llt().solve(b);
+  Eigen::VectorXd twice = 2.0 * solution;
+  const CgResult fromTwice = solve(A, b, twice);
+  EXPECT_TRUE(fromTwice.converged);
+  EXPECT_EQ(fromTwice.iterations, 0);
+  EXPECT_LT((twice - solution).norm(), 1e-12 * solution.norm());
+  Eigen::VectorXd zero, away = -solution;
+  const CgResult fromZero = solve(A, b, zero), fromAway = solve(A, b, away);
+  EXPECT_TRUE(fromAway.converged);
+  EXPECT_EQ(fromAway.iterations, fromZero.iterations);
+  EXPECT_LT((away - solution).norm(), 1e-10 * solution.norm());
 }
 
 }  // namespace
