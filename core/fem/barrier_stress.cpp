@@ -9,17 +9,15 @@ template <int kLanes>
 void recordCurvatureGroups(double* record, int points, const double* volumeLambda,
                            const double* volumeMu, const InversionBarrier& barrier) {
   using V = Eigen::Array<double, kLanes, 1>;
-  // psi = c t^3 with t = threshold - J and c = stiffness / threshold times the bulk modulus
-  // V (lambda + 2 mu / 3): psi'' = 6 c t.
-  const double perBulk = barrier.stiffness / barrier.threshold;
   for (int group = 0; group < points / kLanes; ++group) {
     double* values = record + size_t(group) * 9 * kLanes;
     V A[3][3], cof[3][3];
     for (int rc = 0; rc < 9; ++rc) A[rc / 3][rc % 3] = Eigen::Map<const V>(values + rc * kLanes);
     const V t = (barrier.threshold - barrier_detail::determinant(A)).max(0.0);
-    const V bulk = Eigen::Map<const V>(volumeLambda + group * kLanes) +
-                   (2.0 / 3.0) * Eigen::Map<const V>(volumeMu + group * kLanes);
-    const V root = (6.0 * perBulk * bulk * t).sqrt();
+    const V c = barrier_detail::coefficient<V>(Eigen::Map<const V>(volumeLambda + group * kLanes),
+                                               Eigen::Map<const V>(volumeMu + group * kLanes),
+                                               barrier);
+    const V root = (6.0 * c * t).sqrt();  // psi = c t^3: psi'' = 6 c t
     barrier_detail::cofactor(A, cof);
     for (int rc = 0; rc < 9; ++rc)
       Eigen::Map<V>(values + rc * kLanes) = root * cof[rc / 3][rc % 3];

@@ -53,6 +53,14 @@ template <class V>
   return A[0][0] * first[0] + A[1][0] * first[1] + A[2][0] * first[2];
 }
 
+// psi = c t^3 with t = threshold - J: c per lane, from the lanes' V lambda and V mu (c is the
+// barrier's stiffness, in units of the bulk modulus, over the threshold, times V times that
+// modulus).
+template <class V>
+V coefficient(const V& volumeLambda, const V& volumeMu, const InversionBarrier& b) {
+  return (b.stiffness / b.threshold) * (volumeLambda + (2.0 / 3.0) * volumeMu);
+}
+
 // A 3x3 group of lanes as one object, to pass copies out of line.
 template <class V>
 struct Lanes {
@@ -62,17 +70,16 @@ struct Lanes {
 }  // namespace barrier_detail
 
 /// Gradient mode at the lanes' A (= R^T F): adds dpsi/dA to S and returns psi per lane (zero
-/// where J >= threshold). `bulk` is V (lambda + 2 mu / 3) per lane. `any` is set when a lane
+/// where J >= threshold). `c` is barrier_detail::coefficient per lane. `any` is set when a lane
 /// is below the threshold.
 template <class V>
-[[gnu::noinline]] V addBarrierStress(const V (&A)[3][3], const V& bulk, const InversionBarrier& b,
+[[gnu::noinline]] V addBarrierStress(const V (&A)[3][3], const V& c, const InversionBarrier& b,
                                      V (&S)[3][3], bool& any) {
   const V t = (b.threshold - barrier_detail::determinant(A)).max(0.0);
   if (!(t > 0.0).any()) return V::Zero();
   any = true;
   V cof[3][3];
   barrier_detail::cofactor(A, cof);
-  const V c = (b.stiffness / b.threshold) * bulk;
   const V slope = -3.0 * c * t * t;  // dpsi/dJ
   for (int r = 0; r < 3; ++r)
     for (int m = 0; m < 3; ++m) S[r][m] += slope * cof[r][m];
@@ -90,24 +97,22 @@ template <class V>
     for (int m = 0; m < 3; ++m) S[r][m] += dJ * h[r][m];
 }
 
-/// Hessian mode, exact: adds the barrier's second derivative at the recorded A applied to the
-/// direction's dA to S (see InversionBarrier::exactHessian for what is kept).
+/// Hessian mode, exact (InversionBarrier::exactHessian): adds the barrier's second derivative
+/// at the recorded A applied to the direction's dA to S. `c` as for addBarrierStress.
 template <class V>
-[[gnu::noinline]] void addBarrierHessian(const V (&A)[3][3], const V (&dA)[3][3], const V& bulk,
+[[gnu::noinline]] void addBarrierHessian(const V (&A)[3][3], const V (&dA)[3][3], const V& c,
                                          const InversionBarrier& b, V (&S)[3][3]) {
   V cof[3][3];
   barrier_detail::cofactor(A, cof);
   const V J = A[0][0] * cof[0][0] + A[1][0] * cof[1][0] + A[2][0] * cof[2][0];
   const V t = (b.threshold - J).max(0.0);
   if (!(t > 0.0).any()) return;
-  const V c = (b.stiffness / b.threshold) * bulk;
   V dJ = V::Zero();
   for (int r = 0; r < 3; ++r)
     for (int m = 0; m < 3; ++m) dJ += cof[r][m] * dA[r][m];
   const V curvature = 6.0 * c * t * dJ;  // psi'' dJ
   for (int r = 0; r < 3; ++r)
     for (int m = 0; m < 3; ++m) S[r][m] += curvature * cof[r][m];
-  if (!b.exactHessian) return;
   // psi' d cof(A)[dA]: column m of cof is a_p x a_q, so its change is da_p x a_q + a_p x da_q.
   const V slope = -3.0 * c * t * t;
   for (int m = 0; m < 3; ++m) {
@@ -156,12 +161,12 @@ template <class V>
       m.v[r][c] = M[r][c];
       s.v[r][c] = S[r][c];
     }
-  const V bulk = volumeLambda + (2.0 / 3.0) * volumeMu;
+  const V coefficient = barrier_detail::coefficient(volumeLambda, volumeMu, *b.settings);
   V psi = V::Zero();
   if (gradientMode)
-    psi = addBarrierStress(a.v, bulk, *b.settings, s.v, b.active);
+    psi = addBarrierStress(a.v, coefficient, *b.settings, s.v, b.active);
   else if (b.settings->exactHessian)
-    addBarrierHessian(a.v, m.v, bulk, *b.settings, s.v);
+    addBarrierHessian(a.v, m.v, coefficient, *b.settings, s.v);
   else
     addBarrierCurvature(a.v, m.v, s.v);
   for (int r = 0; r < 3; ++r)
