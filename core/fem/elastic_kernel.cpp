@@ -173,14 +173,20 @@ void ElasticKernel::refreshBarrier() const {
 }
 
 void ElasticKernel::keepBarrierRecords() const {
-  barrierState_.assign(mesh_.numElements(), nullptr);
   barrierElements_ = 0;
+  for (const BarrierRecord& record : barrierRecords_)
+    barrierElements_ += uint32_t(record.elements.size());
+  // Nothing in the barrier (most scenes, most of the time): the Hessian products skip it.
+  if (barrierElements_ == 0) {
+    barrierState_.clear();
+    return;
+  }
+  barrierState_.assign(mesh_.numElements(), nullptr);
   for (const BarrierRecord& record : barrierRecords_) {
     size_t offset = 0;
     for (uint32_t e : record.elements) {
       barrierState_[e] = record.states.data() + offset;
       offset += 9 * size_t(e < mesh_.numTricubic() ? kTricubicGaussPoints : kLinearGaussPoints);
-      ++barrierElements_;
     }
   }
 }

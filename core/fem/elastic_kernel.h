@@ -124,7 +124,8 @@ class ElasticKernel {
   ElasticModel model_ = ElasticModel::Corotated;  // the Simulator sets the scene's
   InversionBarrier barrier_;
   // The last rotation update's records (h of barrier_stress.h, or R^T F with the exact
-  // Hessian), and per element where its record starts in them (null: nothing recorded).
+  // Hessian), and per element where its record starts in them (null: nothing recorded; empty:
+  // no element recorded).
   mutable std::vector<BarrierRecord> barrierRecords_;
   mutable std::vector<const double*> barrierState_;
   mutable uint32_t barrierElements_ = 0;

@@ -5,9 +5,7 @@
 namespace sculpt {
 
 Points ExtrapolatedStart::start(double h, int leastIterations) const {
-  if (iterations_ < leastIterations || step_ != h || beforeLast_.rows() == 0 ||
-      beforeLast_.rows() != last_.rows())
-    return {};
+  if (iterations_ < leastIterations || step_ != h || beforeLast_.rows() == 0) return {};
   return 2.0 * last_ - beforeLast_;
 }
 

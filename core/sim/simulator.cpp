@@ -334,7 +334,7 @@ Simulator::Attempt Simulator::implicitSubstep(double h) {
   Points dx;
   const Points guess = implicitStart_.start(h, settings_.extrapolatedStartIterations);
   const CgResult cg = newtonStep(g, true, settings_.implicitTolerance, dx,
-                                 guess.rows() == position_.rows() ? &guess : nullptr);
+                                 guess.rows() > 0 ? &guess : nullptr);
   implicitStart_.remember(dx, h, cg.iterations);
   a.iterations = cg.iterations;
   a.residual = cg.relativeResidual;
