@@ -138,6 +138,11 @@ void SparseCholesky::solve(const Eigen::VectorXd& r, Eigen::VectorXd& z) const {
   if (impl_->single.empty() || !impl_->single.solve(r, z)) z = impl_->supernodal.solve(r);
 }
 
+void SparseCholesky::solve(const Eigen::MatrixXd& R, Eigen::MatrixXd& Z) const {
+  if (method_ == Method::Simplicial) Z = impl_->simplicial.solve(R);
+  else Z = impl_->supernodal.solve(R);
+}
+
 long long SparseCholesky::factorNonZeros() const {
   if (!valid_) return 0;
   if (method_ == Method::Supernodal)

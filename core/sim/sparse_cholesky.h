@@ -33,6 +33,9 @@ class SparseCholesky {
   /// z = S^-1 r. Requires valid(). The supernodal factor solves in single precision
   /// (single_precision_factor.h): z is S^-1 r to about 1e-6 relative, for a preconditioner.
   void solve(const Eigen::VectorXd& r, Eigen::VectorXd& z) const;
+  /// Z = S^-1 R for many right-hand sides at once, in double precision (the supernodal factor
+  /// solves them with matrix-matrix products). Requires valid().
+  void solve(const Eigen::MatrixXd& R, Eigen::MatrixXd& Z) const;
   /// Nonzeros of L (a measure of the factor's memory and of one solve's cost).
   long long factorNonZeros() const;
 

@@ -24,6 +24,8 @@ struct SystemPreconditioner::Factor {
   uint64_t materialVersion = 0;
   Eigen::VectorXd stiffnessDiagonal;  // K~lin's diagonal (all 3N coordinates)
   Eigen::VectorXd modulus;            // controlPointModulus of the factored materials
+  // S on every coordinate: what extending the factor to coordinates it lacks reads.
+  SparseMatrix system;
   double milliseconds = 0;
   explicit Factor(SparseCholesky::Method method) : cholesky(method) {}
 };
@@ -173,8 +175,8 @@ std::unique_ptr<SystemPreconditioner::Factor> factorRequest(
                         ? *request.modulus
                         : controlPointModulus(*request.mesh, request.lame, *request.A);
   double diagonalSum = 0;
-  const SparseMatrix restricted =
-      restrictToFree(systemMatrix(stiffness, request), request.freeDofs, &diagonalSum);
+  factor->system = systemMatrix(stiffness, request);
+  const SparseMatrix restricted = restrictToFree(factor->system, request.freeDofs, &diagonalSum);
   const int n = int(restricted.rows());
   double stiffnessSum = 0;
   for (int dof : request.freeDofs)
@@ -394,6 +396,7 @@ void SystemPreconditioner::rescale(const FemModel& model, const std::vector<int>
   if (!mapped_ && sameMaterials) {
     inverseSqrtScale_.resize(0);
     toFactor_.clear();
+    extendFactor({});
     return;
   }
   // The current diagonal of S, with the stand-in stiffness's diagonal following the materials
@@ -427,6 +430,33 @@ void SystemPreconditioner::rescale(const FemModel& model, const std::vector<int>
     }
   }
   if (!sameMaterials) ++stats_.rescalings;
+  std::vector<int> added;
+  for (size_t k = 0; k < freeDofs.size(); ++k)
+    if (toFactor_[k] < 0) added.push_back(freeDofs[k]);
+  extendFactor(added);
+}
+
+void SystemPreconditioner::extendFactor(const std::vector<int>& added) {
+  if (added.empty() || !factor_->valid) {
+    extension_.clear();
+    toExtension_.clear();
+    extendedFactor_ = nullptr;
+    return;
+  }
+  if (extendedFactor_ == factor_.get() && extendedDofs_ == added) return;
+  extension_.clear();
+  toExtension_.clear();
+  extendedFactor_ = factor_.get();
+  extendedDofs_ = added;
+  const double cost =
+      FactorExtension::buildCost(factor_->cholesky.factorNonZeros(), added.size());
+  if (added.size() > kMostExtendedCoordinates || cost > kMostExtensionCost) return;
+  if (!extension_.build(factor_->cholesky, factor_->system, factor_->freeDofs, added)) return;
+  ++stats_.extensions;
+  toExtension_.assign(freeDofs_.size(), -1);
+  size_t next = 0;
+  for (size_t k = 0; k < freeDofs_.size(); ++k)
+    if (toFactor_[k] < 0) toExtension_[k] = int(next++);
 }
 
 void SystemPreconditioner::apply(const Eigen::VectorXd& r, Eigen::VectorXd& z) const {
@@ -466,9 +496,18 @@ void SystemPreconditioner::solve(const Eigen::VectorXd& r, Eigen::VectorXd& z) c
   Eigen::VectorXd y;
   if (!empty) factor_->cholesky.solve(x, y);
   z.resize(r.size());
+  if (!extension_.empty()) {
+    Eigen::VectorXd rAdded(Eigen::Index(extendedDofs_.size())), xAdded;
+    for (Eigen::Index k = 0; k < r.size(); ++k)
+      if (const int i = toExtension_[size_t(k)]; i >= 0) rAdded[i] = r[k] * inverseSqrtScale_[k];
+    extension_.finish(y, rAdded, xAdded);
+    for (Eigen::Index k = 0; k < r.size(); ++k)
+      if (const int i = toExtension_[size_t(k)]; i >= 0) z[k] = xAdded[i] * inverseSqrtScale_[k];
+  }
   for (Eigen::Index k = 0; k < r.size(); ++k) {
     const int j = toFactor_[size_t(k)];
-    z[k] = j >= 0 ? y[j] * inverseSqrtScale_[k] : r[k] / currentDiagonal_[k];
+    if (j >= 0) z[k] = y[j] * inverseSqrtScale_[k];
+    else if (extension_.empty()) z[k] = r[k] / currentDiagonal_[k];
   }
 }
 

@@ -30,6 +30,7 @@
 
 #include "fem/fem_model.h"
 #include "sim/control_point_rotations.h"
+#include "sim/factor_extension.h"
 #include "sim/sparse_cholesky.h"
 
 namespace sculpt {
@@ -40,6 +41,7 @@ struct PreconditionerStats {
   int rescalings = 0;          ///< material edits absorbed by rescaling the factor
   int restStiffnessFactorizations = 0;  ///< of these, with the elements' own rest stiffness
   int rotatedSolves = 0;       ///< solves made in the control points' rotated frames
+  int extensions = 0;          ///< factors extended to coordinates released from a pin
   bool restStiffness = false;  ///< the factor in use has the elements' own rest stiffness
   double lastFactorMs = 0;     ///< wall time of the last factorisation, assembly included
   long long factorNonZeros = 0;
@@ -104,6 +106,11 @@ class SystemPreconditioner {
   void factorNow(const FemModel& model, double a, double b, double c,
                  const std::vector<int>& freeDofs);
   void rescale(const FemModel& model, const std::vector<int>& freeDofs);
+  // Serves the free coordinates the factor lacks (`added`, increasing: points released from a
+  // pin since it was made) exactly through its Schur complement, where that costs little
+  // against a factorisation; otherwise by their diagonal. Nothing to do when `added` and the
+  // factor are those of the last call.
+  void extendFactor(const std::vector<int>& added);
   void startBackground(const FemModel& model, double a, double b, double c,
                        const std::vector<int>& freeDofs);
   // Adopts a factor from the worker, unless it is of no use any more.
@@ -119,6 +126,13 @@ class SystemPreconditioner {
   std::vector<int> freeDofs_;
   uint64_t appliedMaterialVersion_ = ~uint64_t(0);
   bool mapped_ = false;  // the free set differs from the factor's
+  // The free coordinates the factor lacks, served through its Schur complement, and each free
+  // coordinate's position among them (-1: not one of them); the factor and coordinates the
+  // extension was (or was not) made for.
+  FactorExtension extension_;
+  std::vector<int> toExtension_;
+  const Factor* extendedFactor_ = nullptr;
+  std::vector<int> extendedDofs_;
   // Drift: the fewest iterations a solve took since the last factorisation.
   int freshIterations_ = -1;
   bool drifted_ = false;
@@ -153,6 +167,10 @@ class SystemPreconditioner {
   // adopted at least this many solves after it was started (more for a larger model).
   static constexpr int kQuietSolves = 30;
   static constexpr int kUpgradeDelayLeast = 20;
+  // Extending the factor: at most this many coordinates, and this many multiply-adds for its
+  // solves (the bunny's factor and 150 coordinates: 1.7e8).
+  static constexpr size_t kMostExtendedCoordinates = 1500;
+  static constexpr double kMostExtensionCost = 4e8;
   // Every this many solves, one goes the way not preferred.
   static constexpr int kRotationProbeEvery = 16;
 };

@@ -9,31 +9,10 @@
 #include <vector>
 
 #include "sim/sparse_cholesky.h"
+#include "support/grid_laplacian.h"
 
 namespace sculpt {
 namespace {
-
-// The 7-point Laplacian of an n^3 grid plus `shift` times the identity: symmetric positive
-// definite, and its nested-dissection factor has large dense supernodes like the solver's.
-Eigen::SparseMatrix<double> gridLaplacian(int n, double shift) {
-  std::vector<Eigen::Triplet<double>> entries;
-  auto id = [n](int i, int j, int k) { return (i * n + j) * n + k; };
-  for (int i = 0; i < n; ++i)
-    for (int j = 0; j < n; ++j)
-      for (int k = 0; k < n; ++k) {
-        const int row = id(i, j, k);
-        entries.emplace_back(row, row, 6.0 + shift);
-        const int next[3][3] = {{i + 1, j, k}, {i, j + 1, k}, {i, j, k + 1}};
-        for (const auto& c : next) {
-          if (c[0] >= n || c[1] >= n || c[2] >= n) continue;
-          entries.emplace_back(row, id(c[0], c[1], c[2]), -1.0);
-          entries.emplace_back(id(c[0], c[1], c[2]), row, -1.0);
-        }
-      }
-  Eigen::SparseMatrix<double> S(n * n * n, n * n * n);
-  S.setFromTriplets(entries.begin(), entries.end());
-  return S;
-}
 
 Eigen::VectorXd randomVector(Eigen::Index n) {
   std::mt19937_64 rng(7);
@@ -57,7 +36,7 @@ double relativeDifference(const Eigen::SparseMatrix<double>& S) {
 
 TEST(SinglePrecisionFactor, SolvesToSinglePrecisionOfTheDoubleFactor) {
   // 2,744 rows, condition number about 240: the error stays near float's epsilon times it.
-  const double difference = relativeDifference(gridLaplacian(14, 0.05));
+  const double difference = relativeDifference(test::gridLaplacian(14, 0.05));
   std::printf("[ measured ] single-precision solve: relative difference %.2e\n", difference);
   EXPECT_LT(difference, 1e-5);
   EXPECT_GT(difference, 1e-9);  // the single-precision solve ran, not the double one
@@ -68,7 +47,7 @@ TEST(SinglePrecisionFactor, KeepsItsAccuracyForMatricesOfAnyScale) {
   // above it) and of 1e-80: L and r are scaled by powers of two into range and back.
   for (const double scale : {1e50, 1e80, 1e-80}) {
     SCOPED_TRACE(scale);
-    const double difference = relativeDifference(gridLaplacian(14, 0.05) * scale);
+    const double difference = relativeDifference(test::gridLaplacian(14, 0.05) * scale);
     std::printf("[ measured ] matrix scaled by %.0e: relative difference %.2e\n", scale,
                 difference);
     EXPECT_LT(difference, 1e-5);
@@ -78,8 +57,8 @@ TEST(SinglePrecisionFactor, KeepsItsAccuracyForMatricesOfAnyScale) {
 TEST(SinglePrecisionFactor, FallsBackToDoublePrecisionBeyondSinglePrecisionsRange) {
   // Two decoupled grids, one 1e80 times the other: no single scaling holds both halves of
   // the solution in single precision, so the double-precision solve answers, to its rounding.
-  const Eigen::SparseMatrix<double> small = gridLaplacian(8, 0.05) * 1e-40;
-  const Eigen::SparseMatrix<double> large = gridLaplacian(8, 0.05) * 1e40;
+  const Eigen::SparseMatrix<double> small = test::gridLaplacian(8, 0.05) * 1e-40;
+  const Eigen::SparseMatrix<double> large = test::gridLaplacian(8, 0.05) * 1e40;
   std::vector<Eigen::Triplet<double>> entries;
   for (const auto* block : {&small, &large})
     for (int c = 0; c < block->outerSize(); ++c)

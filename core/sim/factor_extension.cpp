@@ -1,0 +1,53 @@
+#include "sim/factor_extension.h"
+
+namespace sculpt {
+
+void FactorExtension::clear() {
+  added_ = 0;
+  coupling_.resize(0, 0);
+  solved_.resize(0, 0);
+}
+
+double FactorExtension::buildCost(long long factorNonZeros, size_t added) {
+  return 2.0 * double(factorNonZeros) * double(added);
+}
+
+bool FactorExtension::build(const SparseCholesky& factor, const Eigen::SparseMatrix<double>& S,
+                            const std::vector<int>& factored, const std::vector<int>& added) {
+  clear();
+  const Eigen::Index n = Eigen::Index(factored.size()), m = Eigen::Index(added.size());
+  if (m == 0) return true;
+  std::vector<Eigen::Index> position(size_t(S.rows()), -1);  // in F, then U as n + j
+  for (Eigen::Index k = 0; k < n; ++k) position[size_t(factored[size_t(k)])] = k;
+  for (Eigen::Index j = 0; j < m; ++j) position[size_t(added[size_t(j)])] = n + j;
+  coupling_.setZero(n, m);
+  Eigen::MatrixXd C = Eigen::MatrixXd::Zero(m, m);
+  for (Eigen::Index j = 0; j < m; ++j)
+    for (Eigen::SparseMatrix<double>::InnerIterator it(S, added[size_t(j)]); it; ++it) {
+      const Eigen::Index at = position[size_t(it.row())];
+      if (at < 0) continue;  // a pinned coordinate
+      if (at < n) coupling_(at, j) = it.value();
+      else C(at - n, j) = it.value();
+    }
+  if (n > 0) {
+    factor.solve(coupling_, solved_);
+    C.noalias() -= coupling_.transpose() * solved_;
+  } else {
+    solved_.resize(0, m);
+  }
+  complement_.compute(C);
+  if (complement_.info() != Eigen::Success) {
+    clear();
+    return false;
+  }
+  added_ = m;
+  return true;
+}
+
+void FactorExtension::finish(Eigen::VectorXd& w, const Eigen::VectorXd& rU,
+                             Eigen::VectorXd& xU) const {
+  xU = complement_.solve(rU - coupling_.transpose() * w);
+  w.noalias() -= solved_ * xU;
+}
+
+}  // namespace sculpt
