@@ -1,7 +1,7 @@
 // sculpt-cli bench subdivide CONTROL --levels K [--repeat N]: the cost of refinement (the
 // precomputation) and of one application of the stencils (the per-frame work).
 // sculpt-cli bench fem CONTROL|SCENE [--levels K] [--integrator paper|implicit] [--steps N]
-// [--paint-every N]: the cost of one simulation step (cli/bench_fem.h).
+// [--paint-every N] [--pin-every N]: the cost of one simulation step (cli/bench_fem.h).
 
 #include <algorithm>
 #include <chrono>
@@ -33,11 +33,11 @@ const char* const kBenchUsage =
     "      stencils to the control points (median of 51 runs). The last line is\n"
     "      subdivide_ms=<x> apply_ms=<y> cells=<level-K cells> vertices=<level-K vertices>.\n"
     "  bench fem CONTROL.json (--levels K | --trilinear) [--integrator paper|implicit]\n"
-    "            [--steps N] [--dt S] [--paint-every N [--paint-field youngs|density]\n"
-    "            [--fresh-factor]] [--as-window] [--trace] [other FEM options]\n"
+    "            [--steps N] [--dt S] [--paint-every N [--paint-field youngs|density]]\n"
+    "            [--pin-every N] [--fresh-factor] [--as-window] [--trace] [other FEM options]\n"
     "  bench fem SCENE [--levels K] [--cage N] [--integrator paper|implicit] [--model M]\n"
-    "            [--dt S] [--steps N] [--paint-every N [--paint-field youngs|density]\n"
-    "            [--fresh-factor]] [--as-window] [--trace]\n"
+    "            [--dt S] [--steps N] [--paint-every N [--paint-field youngs|density]]\n"
+    "            [--pin-every N] [--fresh-factor] [--as-window] [--trace]\n"
     "      Times Simulator::step(): the first step (with the preconditioner's first\n"
     "      factorisation), 3 untimed warm-up steps, then N measured steps (default 100;\n"
     "      integrator implicit, dt 1/60 s), and one elastic force evaluation before each\n"
@@ -50,9 +50,13 @@ const char* const kBenchUsage =
     "      initial one, centres visiting the control cells) before every N-th warm-up and\n"
     "      measured step, outside the timing, as the paint tool does (--paint-field density:\n"
     "      density dabs, 10x and 0.1x, instead); a line dabs=<measured>\n"
-    "      warmup_dabs=<n> dab_radius=<m> painted_samples=<n> follows. --fresh-factor refactors\n"
-    "      the preconditioner after each dab, outside the timing: the steps' cost without the\n"
-    "      factor's age, for comparison. --as-window takes the preconditioner's factors made\n"
+    "      warmup_dabs=<n> dab_radius=<m> painted_samples=<n> follows. --pin-every N pins the\n"
+    "      control points in the top quarter of the solid (rest y) that nothing else pins\n"
+    "      before every N-th warm-up and measured step, and releases them at the next, as the\n"
+    "      pin tool holds and lets go; a line pin_edits=<measured> warmup_pin_edits=<n>\n"
+    "      pinned_points=<n> follows. --fresh-factor refactors the preconditioner after each\n"
+    "      dab or pin edit, outside the timing: the steps' cost without the factor's age, for\n"
+    "      comparison. --as-window takes the preconditioner's factors made\n"
     "      on a worker thread when they are ready, never waiting, as the window does (the\n"
     "      steps are then not reproducible). --trace writes step=<k> ms=<x> cg_iterations=<n>\n"
     "      elastic_pass_ms=<y> barrier_elements=<elements below the inversion barrier's\n"

@@ -26,7 +26,8 @@ namespace sculpt::cli {
 const std::vector<OptionSpec> kFemBenchOptions = {
     {"integrator", true}, {"model", true},       {"steps", true},
     {"dt", true},         {"paint-every", true}, {"cage", true},
-    {"paint-field", true}, {"fresh-factor", false}, {"as-window", false}, {"trace", false}};
+    {"paint-field", true}, {"pin-every", true}, {"fresh-factor", false}, {"as-window", false},
+    {"trace", false}};
 
 namespace {
 
@@ -124,6 +125,31 @@ class DabPainter {
   long painted_ = 0;
 };
 
+// A pin on the control points in the top quarter of the solid (by rest y) that are free at the
+// start, as the pin tool holds a region: made at the first edit, released at the next, and so on.
+class PinToggler {
+ public:
+  explicit PinToggler(Simulator& simulator) : simulator_(simulator) {
+    const Points& rest = simulator.model().restControl();
+    if (rest.rows() == 0) return;
+    const double low = rest.col(1).minCoeff(), high = rest.col(1).maxCoeff();
+    const double threshold = high - 0.25 * (high - low);
+    for (Eigen::Index p = 0; p < rest.rows(); ++p)
+      if (rest(p, 1) >= threshold && !simulator.fixedMask()[size_t(p)])
+        points_.push_back(uint32_t(p));
+  }
+  uint32_t points() const { return uint32_t(points_.size()); }
+  void toggle() {
+    pinned_ = !pinned_;
+    for (const uint32_t p : points_) simulator_.setFixed(p, pinned_);
+  }
+
+ private:
+  Simulator& simulator_;
+  std::vector<uint32_t> points_;
+  bool pinned_ = false;
+};
+
 // Times elastic force evaluations at the simulator's current positions, as the step's first pass
 // does them, without changing what the next step starts from (the rotations are its warm start).
 class ElasticPassTimer {
@@ -159,6 +185,7 @@ uint32_t fixedCount(const Simulator& simulator) {
 struct BenchRun {
   int steps = 0;
   int paintEvery = 0;
+  int pinEvery = 0;
   bool paintDensity = false;
   bool freshFactor = false;
   bool asWindow = false;  // worker factors taken when ready, never waited for
@@ -180,6 +207,7 @@ int benchAndPrint(Simulator& simulator, const BenchRun& run, std::optional<doubl
             << " integrator=" << integratorName(settings.integrator) << " dt=" << settings.timeStep
             << " steps=" << run.steps << " warmup=" << FemBenchOptions{}.warmupSteps
             << " paint_every=" << run.paintEvery << (run.paintDensity ? " paint_field=density" : "")
+            << (run.pinEvery > 0 ? " pin_every=" + std::to_string(run.pinEvery) : "")
             << (run.freshFactor ? " fresh_factor=1" : "") << (run.asWindow ? " as_window=1" : "")
             << '\n'
             << "setup_ms=" << ms(run.setupMs) << " control_points=" << model.numControlPoints()
@@ -190,6 +218,7 @@ int benchAndPrint(Simulator& simulator, const BenchRun& run, std::optional<doubl
   options.steps = run.steps;
   options.paintEvery = run.paintEvery;
   options.paintDensity = run.paintDensity;
+  options.pinEvery = run.pinEvery;
   options.freshFactor = run.freshFactor;
   options.trace = run.trace;
   options.firstStepMs = firstStepMs;
@@ -198,6 +227,9 @@ int benchAndPrint(Simulator& simulator, const BenchRun& run, std::optional<doubl
   if (run.paintEvery > 0)
     std::cout << "dabs=" << f.dabs << " warmup_dabs=" << f.warmupDabs
               << " dab_radius=" << f.dabRadius << " painted_samples=" << f.paintedSamples << '\n';
+  if (run.pinEvery > 0)
+    std::cout << "pin_edits=" << f.pinEdits << " warmup_pin_edits=" << f.warmupPinEdits
+              << " pinned_points=" << f.pinnedPoints << '\n';
   const ElementCounts counts = model.mesh().counts();
   char mean[32], passes[32];
   std::snprintf(mean, sizeof mean, "%.1f", f.meanCgIterations);
@@ -305,12 +337,26 @@ FemBenchFigures runFemBench(Simulator& simulator, const FemBenchOptions& options
     painter.emplace(simulator, options.paintDensity);
     figures.dabRadius = painter->radius();
   }
-  auto paintBefore = [&](int stepIndex, int& dabs) {
+  std::optional<PinToggler> pins;
+  if (options.pinEvery > 0) {
+    pins.emplace(simulator);
+    figures.pinnedPoints = pins->points();
+  }
+  // Before step `stepIndex` (warm-up or measured), the dab or pin edit due, outside the timing:
+  // the step pays for what the edit changed.
+  auto editBefore = [&](int stepIndex, int& dabs, int& pinEdits) {
+    bool edited = false;
     if (painter && stepIndex % options.paintEvery == 0) {
       painter->paintNext();
       ++dabs;
-      if (options.freshFactor) simulator.refactorPreconditioner();
+      edited = true;
     }
+    if (pins && stepIndex % options.pinEvery == 0) {
+      pins->toggle();
+      ++pinEdits;
+      edited = true;
+    }
+    if (edited && options.freshFactor) simulator.refactorPreconditioner();
   };
 
   if (options.firstStepMs) {
@@ -321,7 +367,7 @@ FemBenchFigures runFemBench(Simulator& simulator, const FemBenchOptions& options
     figures.firstStepMs = millisecondsSince(start);
   }
   for (int i = 0; i < options.warmupSteps; ++i) {
-    paintBefore(i, figures.warmupDabs);
+    editBefore(i, figures.warmupDabs, figures.warmupPinEdits);
     step();
   }
   // One elastic pass is timed before every measured step, so that the two medians share the
@@ -331,7 +377,7 @@ FemBenchFigures runFemBench(Simulator& simulator, const FemBenchOptions& options
   std::vector<double> samples, passSamples;
   long long iterations = 0;
   for (int i = 0; i < options.steps; ++i) {
-    paintBefore(i, figures.dabs);  // outside the timing: the step pays for what the dab changed
+    editBefore(i, figures.dabs, figures.pinEdits);
     passSamples.push_back(passTimer.timeOnePass());
     const Clock::time_point start = Clock::now();
     const StepReport report = step();
@@ -370,6 +416,7 @@ int benchFemCommand(const CliArgs& args, std::string& file) {
   BenchRun run;
   run.steps = args.intValue("steps", 100, 1, 1'000'000);
   run.paintEvery = args.intValue("paint-every", 0, 1, 1'000'000);
+  run.pinEvery = args.intValue("pin-every", 0, 1, 1'000'000);
   run.freshFactor = args.has("fresh-factor");
   const std::string field = args.value("paint-field").value_or("youngs");
   if (field != "youngs" && field != "density")
@@ -379,8 +426,10 @@ int benchFemCommand(const CliArgs& args, std::string& file) {
     throw UsageError("--paint-field chooses what the dabs paint: it needs --paint-every");
   run.asWindow = args.has("as-window");
   run.trace = args.has("trace");
-  if (run.freshFactor && run.paintEvery == 0)
-    throw UsageError("--fresh-factor refactors after each dab: it needs --paint-every");
+  if (run.freshFactor && run.paintEvery == 0 && run.pinEvery == 0)
+    throw UsageError(
+        "--fresh-factor refactors after each dab or pin edit: it needs --paint-every or "
+        "--pin-every");
   file = args.positional()[1];
   if (lowerExtension(file) == ".json") return benchControlMesh(args, file, run);
   return benchScene(args, file, run);

@@ -1,7 +1,7 @@
 #pragma once
 // The FEM step benchmark (sculpt-cli bench fem): wall times of Simulator::step() on a simulator
 // the caller has set up (pins, loads, settings), of one elastic force evaluation, and optionally
-// stiffness dabs painted between steps, as the paint tool paints them.
+// stiffness dabs painted between steps, as the paint tool paints them, or pins made and released.
 
 #include <iosfwd>
 #include <optional>
@@ -18,7 +18,11 @@ struct FemBenchOptions {
   int warmupSteps = 3;   ///< untimed steps after the first one
   int paintEvery = 0;    ///< a stiffness dab before every N-th warm-up and measured step; 0: none
   bool paintDensity = false;  ///< the dabs paint density (10x and 0.1x) instead of stiffness
-  /// After each dab, outside the timing, a new preconditioner factor for the new materials
+  /// Before every N-th warm-up and measured step, the pin of the control points in the top
+  /// quarter of the solid (by rest y) that no other pin holds: made, then released, and so on;
+  /// 0: none.
+  int pinEvery = 0;
+  /// After each dab or pin edit, outside the timing, a new preconditioner factor for the new materials
   /// (Simulator::refactorPreconditioner): steps free of the factor's age, for comparison.
   bool freshFactor = false;
   /// Writes one line per measured step to the error stream: its time, CG iterations and the
@@ -44,6 +48,9 @@ struct FemBenchFigures {
   int warmupDabs = 0;           ///< dabs painted before warm-up steps
   double dabRadius = 0;         ///< m (rest): one control cell, controlCellSize()
   long paintedSamples = 0;      ///< Gauss samples touched by all dabs
+  int pinEdits = 0;             ///< pins made or released before measured steps
+  int warmupPinEdits = 0;       ///< before warm-up steps
+  uint32_t pinnedPoints = 0;    ///< control points each pin edit holds or releases
 };
 
 /// Fixes the control points whose rest y is the least (the bottom layer); returns how many.

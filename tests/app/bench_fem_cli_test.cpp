@@ -154,7 +154,28 @@ TEST_F(BenchFemCliTest, BenchFemTracesStepsAndRefactorsForEveryDabWhenAsked) {
   }
   // A factor that knows every dab serves the solve at least as well as the rescaled one.
   EXPECT_LE(b.at("cg_iterations"), a.at("cg_iterations"));
-  expectBadInput("bench fem " + kBlock + " --steps 2 --fresh-factor", "needs --paint-every");
+  expectBadInput("bench fem " + kBlock + " --steps 2 --fresh-factor",
+                 "needs --paint-every or --pin-every");
+}
+
+TEST_F(BenchFemCliTest, BenchFemPinEveryPinsAndReleasesTheTopQuarter) {
+  CliResult stale, fresh;
+  const std::map<std::string, double> a = bench(kBlock + " --steps 6 --pin-every 2", &stale);
+  EXPECT_NE(stale.out.find(" paint_every=0 pin_every=2\n"), std::string::npos) << stale.out;
+  // block3's 4^3 control points lie in 4 layers: the top quarter of its height holds the top
+  // layer alone.
+  const std::string pins = lineStartingWith(stale.out, "pin_edits");
+  const std::map<std::string, double> p = numbersOf(keyValues(pins));
+  EXPECT_EQ(p.at("pin_edits"), 3);         // before measured steps 0, 2 and 4
+  EXPECT_EQ(p.at("warmup_pin_edits"), 2);  // before warm-up steps 0 and 2
+  EXPECT_EQ(p.at("pinned_points"), 16);
+  // Released points are served as a fresh factor serves them (factor_extension.h).
+  const std::map<std::string, double> b =
+      bench(kBlock + " --steps 6 --pin-every 2 --fresh-factor", &fresh);
+  EXPECT_NE(fresh.out.find(" pin_every=2 fresh_factor=1\n"), std::string::npos) << fresh.out;
+  EXPECT_LE(a.at("cg_iterations"), b.at("cg_iterations") + 1.0);
+  expectBadInput("bench fem " + kBlock + " --steps 2 --pin-every 0",
+                 "--pin-every must be an integer from 1");
 }
 
 TEST_F(BenchFemCliTest, BenchFemStepsAsTheWindowWhenAsked) {
