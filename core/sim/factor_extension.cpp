@@ -4,6 +4,7 @@ namespace sculpt {
 
 void FactorExtension::clear() {
   added_ = 0;
+  coupled_ = false;
   coupling_.resize(0, 0);
   solved_.resize(0, 0);
 }
@@ -41,11 +42,40 @@ bool FactorExtension::build(const SparseCholesky& factor, const Eigen::SparseMat
     return false;
   }
   added_ = m;
+  coupled_ = true;
+  return true;
+}
+
+bool FactorExtension::buildUncoupled(const Eigen::SparseMatrix<double>& S,
+                                     const std::vector<int>& added) {
+  clear();
+  if (added.empty()) return true;
+  std::vector<int> position(size_t(S.rows()), -1);
+  for (size_t j = 0; j < added.size(); ++j) position[size_t(added[j])] = int(j);
+  const int m = int(added.size());
+  Eigen::SparseMatrix<double> block(m, m);
+  Eigen::Index entries = 0;
+  for (const int dof : added) entries += S.col(dof).nonZeros();
+  block.reserve(entries);
+  for (int j = 0; j < m; ++j) {
+    block.startVec(j);
+    // S's rows come in increasing order, and so do their positions among `added` (increasing).
+    for (Eigen::SparseMatrix<double>::InnerIterator it(S, added[size_t(j)]); it; ++it)
+      if (const int i = position[size_t(it.row())]; i >= 0) block.insertBack(i, j) = it.value();
+  }
+  block.finalize();
+  if (!uncoupled_.factor(block)) return false;
+  added_ = m;
+  coupled_ = false;
   return true;
 }
 
 void FactorExtension::finish(Eigen::VectorXd& w, const Eigen::VectorXd& rU,
                              Eigen::VectorXd& xU) const {
+  if (!coupled_) {
+    uncoupled_.solve(rU, xU);
+    return;
+  }
   xU = complement_.solve(rU - coupling_.transpose() * w);
   w.noalias() -= solved_ * xU;
 }

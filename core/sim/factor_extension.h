@@ -8,6 +8,10 @@
 // served by their diagonal alone, they cost CG several times the iterations until a new factor
 // arrives (docs/fem.md, "Pin edits"). Building it solves S_FF for the |U| columns of B at once
 // (matrix-matrix products in the supernodal factor) and factors the |U| x |U| complement.
+//
+// Where those solves cost too much (many coordinates and a large factor), the uncoupled form
+// drops B: x_U = S_UU^-1 r_U from a sparse factor of S_UU, and w is left as it is (a block
+// Jacobi step). It costs almost nothing to build and serves the released points nearly as well.
 
 #include <Eigen/Cholesky>
 #include <Eigen/Core>
@@ -25,8 +29,12 @@ class FactorExtension {
   /// extend it to. False, and empty, when the complement is not positive definite.
   bool build(const SparseCholesky& factor, const Eigen::SparseMatrix<double>& S,
              const std::vector<int>& factored, const std::vector<int>& added);
+  /// The uncoupled form: S_UU alone, factored sparse. False, and empty, when S_UU is not
+  /// positive definite.
+  bool buildUncoupled(const Eigen::SparseMatrix<double>& S, const std::vector<int>& added);
   void clear();
   bool empty() const { return added_ == 0; }
+  bool coupled() const { return coupled_; }
   /// Multiply-adds of build() for `added` coordinates and a factor with `factorNonZeros`
   /// nonzeros in L (a forward and a back substitution per column), for deciding whether to.
   static double buildCost(long long factorNonZeros, size_t added);
@@ -37,9 +45,11 @@ class FactorExtension {
 
  private:
   Eigen::Index added_ = 0;
+  bool coupled_ = false;
   Eigen::MatrixXd coupling_;  // B, factored rows x added columns
   Eigen::MatrixXd solved_;    // Z = S_FF^-1 B
   Eigen::LLT<Eigen::MatrixXd> complement_;
+  SparseCholesky uncoupled_;  // S_UU, for the uncoupled form
 };
 
 }  // namespace sculpt

@@ -450,8 +450,10 @@ void SystemPreconditioner::extendFactor(const std::vector<int>& added) {
   extendedDofs_ = added;
   const double cost =
       FactorExtension::buildCost(factor_->cholesky.factorNonZeros(), added.size());
-  if (added.size() > kMostExtendedCoordinates || cost > kMostExtensionCost) return;
-  if (!extension_.build(factor_->cholesky, factor_->system, factor_->freeDofs, added)) return;
+  const bool coupled = added.size() <= kMostCoupledCoordinates && cost <= kMostCouplingCost;
+  if (coupled ? !extension_.build(factor_->cholesky, factor_->system, factor_->freeDofs, added)
+              : !extension_.buildUncoupled(factor_->system, added))
+    return;
   ++stats_.extensions;
   toExtension_.assign(freeDofs_.size(), -1);
   size_t next = 0;

@@ -1,6 +1,6 @@
 // A factor of part of a system, extended to more of its coordinates through the Schur
-// complement, against a dense Cholesky solve of the whole system; and the preconditioner serving
-// points released from a pin with it.
+// complement (or beside it, uncoupled), against dense Cholesky solves; and the preconditioner
+// serving points released from a pin with it.
 
 #include <gtest/gtest.h>
 
@@ -85,6 +85,23 @@ TEST(FactorExtension, FromNoFactoredCoordinatesItIsTheWholeSolve) {
   EXPECT_LT(extendedAgainstDense(S, {}, added, SparseCholesky::Method::Supernodal), 1e-13);
 }
 
+TEST(FactorExtension, TheUncoupledFormSolvesTheAddedBlockAlone) {
+  const SparseMatrix S = test::gridLaplacian(5, 0.05);
+  std::vector<int> added;
+  for (int i = 40; i < 90; i += 2) added.push_back(i);
+  FactorExtension extension;
+  ASSERT_TRUE(extension.buildUncoupled(S, added));
+  EXPECT_FALSE(extension.coupled());
+  const Eigen::VectorXd rU = randomVector(Eigen::Index(added.size()), 5);
+  const Eigen::VectorXd truth = Eigen::MatrixXd(S)(added, added).llt().solve(rU);
+  Eigen::VectorXd w = randomVector(10, 6), xU;
+  const Eigen::VectorXd before = w;
+  extension.finish(w, rU, xU);
+  // The sparse factor solves in single precision.
+  EXPECT_LT((xU - truth).norm(), 1e-6 * truth.norm());
+  EXPECT_EQ(w, before);  // the factored part is left as it was
+}
+
 TEST(FactorExtension, RefusesAnIndefiniteSystem) {
   SparseMatrix S = test::gridLaplacian(4, 0.05);
   std::vector<int> factored, added;
@@ -94,6 +111,8 @@ TEST(FactorExtension, RefusesAnIndefiniteSystem) {
   ASSERT_TRUE(factor.factor(restricted(S, factored)));
   FactorExtension extension;
   EXPECT_FALSE(extension.build(factor, S, factored, added));
+  EXPECT_TRUE(extension.empty());
+  EXPECT_FALSE(extension.buildUncoupled(S, added));
   EXPECT_TRUE(extension.empty());
 }
 
