@@ -440,13 +440,13 @@ void SystemPreconditioner::extendFactor(const std::vector<int>& added) {
   if (added.empty() || !factor_->valid) {
     extension_.clear();
     toExtension_.clear();
-    extendedFactor_ = nullptr;
+    extendedFactor_ = -1;
     return;
   }
-  if (extendedFactor_ == factor_.get() && extendedDofs_ == added) return;
+  if (extendedFactor_ == stats_.factorizations && extendedDofs_ == added) return;
   extension_.clear();
   toExtension_.clear();
-  extendedFactor_ = factor_.get();
+  extendedFactor_ = stats_.factorizations;
   extendedDofs_ = added;
   const double cost =
       FactorExtension::buildCost(factor_->cholesky.factorNonZeros(), added.size());

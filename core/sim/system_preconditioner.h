@@ -127,11 +127,11 @@ class SystemPreconditioner {
   uint64_t appliedMaterialVersion_ = ~uint64_t(0);
   bool mapped_ = false;  // the free set differs from the factor's
   // The free coordinates the factor lacks, served through its Schur complement, and each free
-  // coordinate's position among them (-1: not one of them); the factor and coordinates the
-  // extension was (or was not) made for.
+  // coordinate's position among them (-1: not one of them); the factor (its number among the
+  // factorisations) and the coordinates the extension was, or was not, made for.
   FactorExtension extension_;
   std::vector<int> toExtension_;
-  const Factor* extendedFactor_ = nullptr;
+  int extendedFactor_ = -1;
   std::vector<int> extendedDofs_;
   // Drift: the fewest iterations a solve took since the last factorisation.
   int freshIterations_ = -1;
