@@ -5,26 +5,18 @@
 
 #include <Eigen/SparseCholesky>
 #include <cstdio>
-#include <random>
 #include <vector>
 
 #include "sim/sparse_cholesky.h"
 #include "support/grid_laplacian.h"
+#include "support/random_vector.h"
 
 namespace sculpt {
 namespace {
 
-Eigen::VectorXd randomVector(Eigen::Index n) {
-  std::mt19937_64 rng(7);
-  std::uniform_real_distribution<double> u(-1, 1);
-  Eigen::VectorXd v(n);
-  for (Eigen::Index i = 0; i < n; ++i) v[i] = u(rng);
-  return v;
-}
-
 // |z - S^-1 r| / |S^-1 r| for the supernodal solve z, against a double-precision factor.
 double relativeDifference(const Eigen::SparseMatrix<double>& S) {
-  const Eigen::VectorXd r = randomVector(S.rows());
+  const Eigen::VectorXd r = test::randomVector(S.rows(), 7);
   SparseCholesky supernodal(SparseCholesky::Method::Supernodal);
   EXPECT_TRUE(supernodal.factor(S));
   Eigen::VectorXd z;
