@@ -5,12 +5,13 @@ namespace sculpt {
 void FactorExtension::clear() {
   added_ = 0;
   coupled_ = false;
-  coupling_.resize(0, 0);
+  coupling_ = {};
   solved_.resize(0, 0);
 }
 
 double FactorExtension::buildCost(long long factorNonZeros, size_t added) {
-  return 2.0 * double(factorNonZeros) * double(added);
+  const double m = double(added);
+  return 2.0 * double(factorNonZeros) * m + m * m * m / 3.0;
 }
 
 bool FactorExtension::build(const SparseCholesky& factor, const Eigen::SparseMatrix<double>& S,
@@ -21,17 +22,25 @@ bool FactorExtension::build(const SparseCholesky& factor, const Eigen::SparseMat
   std::vector<Eigen::Index> position(size_t(S.rows()), -1);  // in F, then U as n + j
   for (Eigen::Index k = 0; k < n; ++k) position[size_t(factored[size_t(k)])] = k;
   for (Eigen::Index j = 0; j < m; ++j) position[size_t(added[size_t(j)])] = n + j;
-  coupling_.setZero(n, m);
-  Eigen::MatrixXd C = Eigen::MatrixXd::Zero(m, m);
+  // B is sparse (the factored coordinates next to the added ones): kept so, and dense only as
+  // the solve's right-hand sides.
+  Eigen::MatrixXd C = Eigen::MatrixXd::Zero(m, m), rightHandSides = Eigen::MatrixXd::Zero(n, m);
+  std::vector<Eigen::Triplet<double>> entries;
   for (Eigen::Index j = 0; j < m; ++j)
     for (Eigen::SparseMatrix<double>::InnerIterator it(S, added[size_t(j)]); it; ++it) {
       const Eigen::Index at = position[size_t(it.row())];
       if (at < 0) continue;  // a pinned coordinate
-      if (at < n) coupling_(at, j) = it.value();
-      else C(at - n, j) = it.value();
+      if (at >= n) {
+        C(at - n, j) = it.value();
+      } else {
+        rightHandSides(at, j) = it.value();
+        entries.emplace_back(at, j, it.value());
+      }
     }
+  coupling_.resize(n, m);
+  coupling_.setFromTriplets(entries.begin(), entries.end());
   if (n > 0) {
-    factor.solve(coupling_, solved_);
+    factor.solve(rightHandSides, solved_);
     C.noalias() -= coupling_.transpose() * solved_;
   } else {
     solved_.resize(0, m);

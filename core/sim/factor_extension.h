@@ -36,7 +36,8 @@ class FactorExtension {
   bool empty() const { return added_ == 0; }
   bool coupled() const { return coupled_; }
   /// Multiply-adds of build() for `added` coordinates and a factor with `factorNonZeros`
-  /// nonzeros in L (a forward and a back substitution per column), for deciding whether to.
+  /// nonzeros in L (a forward and a back substitution per column, and the complement's
+  /// factorisation), for deciding whether to.
   static double buildCost(long long factorNonZeros, size_t added);
   /// Given w = S_FF^-1 r_F (the factor's coordinates, in its numbering) and r_U (the added
   /// coordinates, in the order given to build()), completes the extended solve: w becomes its
@@ -46,7 +47,7 @@ class FactorExtension {
  private:
   Eigen::Index added_ = 0;
   bool coupled_ = false;
-  Eigen::MatrixXd coupling_;  // B, factored rows x added columns
+  Eigen::SparseMatrix<double> coupling_;  // B, factored rows x added columns
   Eigen::MatrixXd solved_;    // Z = S_FF^-1 B
   Eigen::LLT<Eigen::MatrixXd> complement_;
   SparseCholesky uncoupled_;  // S_UU, for the uncoupled form
