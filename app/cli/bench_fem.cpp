@@ -386,7 +386,8 @@ FemBenchFigures runFemBench(Simulator& simulator, const FemBenchOptions& options
       err << "step=" << i << " ms=" << ms(samples.back()) << " cg_iterations=" << report.iterations
           << " elastic_pass_ms=" << ms(passSamples.back())
           << " barrier_elements=" << simulator.model().elastic().barrierElements()
-          << " factorizations=" << simulator.preconditionerStats().factorizations << '\n';
+          << " factorizations=" << simulator.preconditionerStats().factorizations
+          << " extensions=" << simulator.preconditionerStats().extensions << '\n';
     iterations += report.iterations;
     figures.failed = figures.failed || !report.ok;
   }
