@@ -22,8 +22,9 @@ struct FemBenchOptions {
   /// quarter of the solid (by rest y) that no other pin holds: made, then released, and so on;
   /// 0: none.
   int pinEvery = 0;
-  /// After each dab or pin edit, outside the timing, a new preconditioner factor for the new materials
-  /// (Simulator::refactorPreconditioner): steps free of the factor's age, for comparison.
+  /// After each dab or pin edit, outside the timing, a new preconditioner factor for the new
+  /// materials and pins (Simulator::refactorPreconditioner): steps free of the factor's age,
+  /// for comparison.
   bool freshFactor = false;
   /// Writes one line per measured step to the error stream: its time, CG iterations and the
   /// elastic pass timed before it.
