@@ -443,18 +443,21 @@ void SystemPreconditioner::extendFactor(const std::vector<int>& added) {
     extendedFactor_ = -1;
     return;
   }
-  if (extendedFactor_ == stats_.factorizations && extendedDofs_ == added) return;
-  extension_.clear();
+  // Built again only for another factor or other coordinates; the positions in the free
+  // vector are redone every time (pins the factor has may have been made since).
+  if (extendedFactor_ != stats_.factorizations || extendedDofs_ != added) {
+    extension_.clear();
+    extendedFactor_ = stats_.factorizations;
+    extendedDofs_ = added;
+    const double cost =
+        FactorExtension::buildCost(factor_->cholesky.factorNonZeros(), added.size());
+    const bool coupled = added.size() <= kMostCoupledCoordinates && cost <= kMostCouplingCost;
+    if (coupled ? extension_.build(factor_->cholesky, factor_->system, factor_->freeDofs, added)
+                : extension_.buildUncoupled(factor_->system, added))
+      ++stats_.extensions;
+  }
   toExtension_.clear();
-  extendedFactor_ = stats_.factorizations;
-  extendedDofs_ = added;
-  const double cost =
-      FactorExtension::buildCost(factor_->cholesky.factorNonZeros(), added.size());
-  const bool coupled = added.size() <= kMostCoupledCoordinates && cost <= kMostCouplingCost;
-  if (coupled ? !extension_.build(factor_->cholesky, factor_->system, factor_->freeDofs, added)
-              : !extension_.buildUncoupled(factor_->system, added))
-    return;
-  ++stats_.extensions;
+  if (extension_.empty()) return;
   toExtension_.assign(freeDofs_.size(), -1);
   size_t next = 0;
   for (size_t k = 0; k < freeDofs_.size(); ++k)

@@ -338,6 +338,40 @@ TEST(SystemPreconditioner, PointsReleasedFromAPinAreSolvedAsAFreshFactorSolvesTh
   EXPECT_LT(difference, 1e-10);
 }
 
+TEST(SystemPreconditioner, APinMadeAfterAReleaseLeavesTheExtensionServingTheReleasedPoints) {
+  // Points released (served through the extension), then a point the factor has pinned: the
+  // released set is the same, the free vector shorter. The solve is the extended factor's with
+  // the new pin left out: a fresh factor of the released set, zero at the pinned coordinates.
+  auto model = test::buildModel(test::block3(), 1, false);
+  ASSERT_TRUE(model);
+  // The released points (40 to 45) come after the one pinned again (20) in the free vector.
+  const std::vector<int> released = allDofs(*model, 10);
+  std::vector<int> factored;
+  for (int dof : released)
+    if (dof / 3 < 40 || dof / 3 > 45) factored.push_back(dof);
+  SystemPreconditioner old(SparseCholesky::Method::Simplicial);
+  ASSERT_TRUE(old.update(*model, 3600, 60, 1, factored));
+  ASSERT_TRUE(old.update(*model, 3600, 60, 1, released));
+  std::vector<int> pinnedAgain;
+  for (int dof : released)
+    if (dof / 3 != 20) pinnedAgain.push_back(dof);
+  ASSERT_TRUE(old.update(*model, 3600, 60, 1, pinnedAgain));
+  EXPECT_EQ(old.stats().extensions, 1);  // not built again
+
+  SystemPreconditioner fresh(SparseCholesky::Method::Simplicial);
+  ASSERT_TRUE(fresh.update(*model, 3600, 60, 1, released));
+  const Eigen::VectorXd r = test::randomVector(Eigen::Index(pinnedAgain.size()), 5);
+  Eigen::VectorXd padded = Eigen::VectorXd::Zero(Eigen::Index(released.size())), x, y;
+  for (size_t k = 0, j = 0; k < released.size(); ++k)
+    if (released[k] / 3 != 20) padded[Eigen::Index(k)] = r[Eigen::Index(j++)];
+  old.apply(r, x);
+  fresh.apply(padded, y);
+  Eigen::VectorXd expected(x.size());
+  for (size_t k = 0, j = 0; k < released.size(); ++k)
+    if (released[k] / 3 != 20) expected[Eigen::Index(j++)] = y[Eigen::Index(k)];
+  EXPECT_LT((x - expected).norm(), 1e-10 * expected.norm());
+}
+
 TEST(SystemPreconditioner, ReleasingAPinCostsTheStepsNoMoreIterationsThanAFreshFactor) {
   // Two block3 solids sagging with their bottom and top layers pinned; the top is released,
   // and one of them refactors at once: the other's steps, served by the extended factor until
