@@ -1,5 +1,7 @@
 #include "sim/factor_extension.h"
 
+#include "sim/restricted_matrix.h"
+
 namespace sculpt {
 
 void FactorExtension::clear() {
@@ -19,28 +21,12 @@ bool FactorExtension::build(const SparseCholesky& factor, const Eigen::SparseMat
   clear();
   const Eigen::Index n = Eigen::Index(factored.size()), m = Eigen::Index(added.size());
   if (m == 0) return true;
-  std::vector<Eigen::Index> position(size_t(S.rows()), -1);  // in F, then U as n + j
-  for (Eigen::Index k = 0; k < n; ++k) position[size_t(factored[size_t(k)])] = k;
-  for (Eigen::Index j = 0; j < m; ++j) position[size_t(added[size_t(j)])] = n + j;
   // B is sparse (the factored coordinates next to the added ones): kept so, and dense only as
   // the solve's right-hand sides.
-  Eigen::MatrixXd C = Eigen::MatrixXd::Zero(m, m), rightHandSides = Eigen::MatrixXd::Zero(n, m);
-  std::vector<Eigen::Triplet<double>> entries;
-  for (Eigen::Index j = 0; j < m; ++j)
-    for (Eigen::SparseMatrix<double>::InnerIterator it(S, added[size_t(j)]); it; ++it) {
-      const Eigen::Index at = position[size_t(it.row())];
-      if (at < 0) continue;  // a pinned coordinate
-      if (at >= n) {
-        C(at - n, j) = it.value();
-      } else {
-        rightHandSides(at, j) = it.value();
-        entries.emplace_back(at, j, it.value());
-      }
-    }
-  coupling_.resize(n, m);
-  coupling_.setFromTriplets(entries.begin(), entries.end());
+  coupling_ = restrictedMatrix(S, factored, added);
+  Eigen::MatrixXd C = Eigen::MatrixXd(restrictedMatrix(S, added, added));
   if (n > 0) {
-    factor.solve(rightHandSides, solved_);
+    factor.solve(Eigen::MatrixXd(coupling_), solved_);
     C.noalias() -= coupling_.transpose() * solved_;
   } else {
     solved_.resize(0, m);
@@ -59,22 +45,8 @@ bool FactorExtension::buildUncoupled(const Eigen::SparseMatrix<double>& S,
                                      const std::vector<int>& added) {
   clear();
   if (added.empty()) return true;
-  std::vector<int> position(size_t(S.rows()), -1);
-  for (size_t j = 0; j < added.size(); ++j) position[size_t(added[j])] = int(j);
-  const int m = int(added.size());
-  Eigen::SparseMatrix<double> block(m, m);
-  Eigen::Index entries = 0;
-  for (const int dof : added) entries += S.col(dof).nonZeros();
-  block.reserve(entries);
-  for (int j = 0; j < m; ++j) {
-    block.startVec(j);
-    // S's rows come in increasing order, and so do their positions among `added` (increasing).
-    for (Eigen::SparseMatrix<double>::InnerIterator it(S, added[size_t(j)]); it; ++it)
-      if (const int i = position[size_t(it.row())]; i >= 0) block.insertBack(i, j) = it.value();
-  }
-  block.finalize();
-  if (!uncoupled_.factor(block)) return false;
-  added_ = m;
+  if (!uncoupled_.factor(restrictedMatrix(S, added, added))) return false;
+  added_ = Eigen::Index(added.size());
   coupled_ = false;
   return true;
 }

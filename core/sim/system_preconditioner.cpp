@@ -8,6 +8,7 @@
 #include "fem/elastic_kernel.h"
 #include "sim/linear_stiffness.h"
 #include "sim/rest_stiffness.h"
+#include "sim/restricted_matrix.h"
 
 namespace sculpt {
 
@@ -112,25 +113,13 @@ SystemPreconditioner::Request requestFor(const FemModel& model, double a, double
   return request;
 }
 
-// S restricted to the free coordinates (increasing, so every kept column keeps its rows in order
-// and is copied as it is); adds the restricted diagonal to `diagonalSum` when given.
+// S restricted to the free coordinates; adds the restricted diagonal to `diagonalSum` when
+// given.
 SparseMatrix restrictToFree(const SparseMatrix& S, const std::vector<int>& freeDofs,
                             double* diagonalSum = nullptr) {
-  std::vector<int> freeIndex(size_t(S.rows()), -1);
-  for (size_t k = 0; k < freeDofs.size(); ++k) freeIndex[size_t(freeDofs[k])] = int(k);
-  const int n = int(freeDofs.size());
-  SparseMatrix restricted(n, n);
-  restricted.reserve(S.nonZeros());
-  for (int k = 0; k < n; ++k) {
-    restricted.startVec(k);
-    for (SparseMatrix::InnerIterator it(S, freeDofs[size_t(k)]); it; ++it) {
-      const int r = freeIndex[size_t(it.row())];
-      if (r < 0) continue;
-      restricted.insertBack(r, k) = it.value();
-      if (r == k && diagonalSum) *diagonalSum += it.value();
-    }
-  }
-  restricted.finalize();
+  SparseMatrix restricted = restrictedMatrix(S, freeDofs, freeDofs);
+  if (diagonalSum)
+    for (Eigen::Index k = 0; k < restricted.rows(); ++k) *diagonalSum += restricted.coeff(k, k);
   return restricted;
 }
 
