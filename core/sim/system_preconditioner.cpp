@@ -58,6 +58,12 @@ class SystemPreconditioner::WorkerFactor {
   WorkerFactor(const WorkerFactor&) = delete;
   WorkerFactor& operator=(const WorkerFactor&) = delete;
   bool running() const { return future_.valid(); }
+  // Done (or never started): dropping it now waits for nothing.
+  bool finished() const {
+    return !running() ||
+           future_.wait_for(std::chrono::seconds(0)) == std::future_status::ready;
+  }
+  void cancel() { *cancelled_ = true; }
   // Counts this solve; the factor when its turn has come (null before, and once taken).
   std::unique_ptr<Factor> takeWhenDue(bool reproducible) {
     if (!running()) return nullptr;
@@ -93,6 +99,7 @@ SystemPreconditioner::SystemPreconditioner(SparseCholesky::Method method) : meth
 SystemPreconditioner::~SystemPreconditioner() {
   upgrade_.reset();
   pending_.reset();
+  abandoned_.clear();
   if (firstFactor_.valid()) firstFactor_.wait();
 }
 
@@ -275,6 +282,8 @@ bool SystemPreconditioner::update(const FemModel& model, double massScale, doubl
   if (!std::is_sorted(freeDofs.begin(), freeDofs.end()))
     throw std::invalid_argument("SystemPreconditioner: free coordinates must be increasing");
   const double scales[3] = {massScale, dampingScale, stiffnessScale};
+  if (solves_ > 0 && freeDofs != freeDofs_) giveUpRestStiffness();
+  std::erase_if(abandoned_, [](const std::unique_ptr<WorkerFactor>& w) { return w->finished(); });
   if (pending_)
     if (std::unique_ptr<Factor> factor = pending_->takeWhenDue(reproducible_))
       adoptFromWorker(std::move(factor), freeDofs);
@@ -326,6 +335,16 @@ void SystemPreconditioner::countQuietSolves(const FemModel& model) {
     quietMaterialVersion_ = version;
   }
   ++quietSolves_;
+}
+
+void SystemPreconditioner::giveUpRestStiffness() {
+  quietSolves_ = 0;
+  if (!upgrade_ || !upgrade_->running()) return;
+  // Made for the old pins, it would be dropped at its turn: waiting for it then (a
+  // reproducible run does) stalls a step for nothing. Told to stop, it is let finish unwatched.
+  upgrade_->cancel();
+  abandoned_.push_back(std::move(upgrade_));
+  ++stats_.givenUp;
 }
 
 void SystemPreconditioner::upgradeToRestStiffness(const FemModel& model,

@@ -42,6 +42,7 @@ struct PreconditionerStats {
   int restStiffnessFactorizations = 0;  ///< of these, with the elements' own rest stiffness
   int rotatedSolves = 0;       ///< solves made in the control points' rotated frames
   int extensions = 0;          ///< factors extended to coordinates released from a pin
+  int givenUp = 0;             ///< rest-stiffness factors given up on the worker at a pin edit
   bool restStiffness = false;  ///< the factor in use has the elements' own rest stiffness
   double lastFactorMs = 0;     ///< wall time of the last factorisation, assembly included
   long long factorNonZeros = 0;
@@ -90,11 +91,15 @@ class SystemPreconditioner {
   std::unique_ptr<Factor> makeFactor(const FemModel& model, double a, double b, double c,
                                      const std::vector<int>& freeDofs);
   void adopt(std::unique_ptr<Factor> factor);
-  // Counts the solves at the model's current materials (a change starts the count again).
+  // Counts the solves at the model's current materials (a change starts the count again, as a
+  // pin edit does: giveUpRestStiffness).
   void countQuietSolves(const FemModel& model);
   // Starts the rest-stiffness factor on a worker when the time has come; adopts one whose
   // time has come if it still fits the scales and the free coordinates.
   void upgradeToRestStiffness(const FemModel& model, const std::vector<int>& freeDofs);
+  // A pin edit: the quiet count starts again, and a rest-stiffness factor being made for the
+  // old pins is given up at once.
+  void giveUpRestStiffness();
   // Whether this solve turns the residual into the control points' frames (and their
   // rotations, when it does).
   void chooseRotation(const FemModel& model);
@@ -138,6 +143,8 @@ class SystemPreconditioner {
   bool drifted_ = false;
   // After pin edits or drift (the stand-in), and the rest-stiffness factor.
   std::unique_ptr<WorkerFactor> pending_, upgrade_;
+  // Given up and told to stop, not yet finished: destroying one would wait for it.
+  std::vector<std::unique_ptr<WorkerFactor>> abandoned_;
   uint64_t quietMaterialVersion_ = ~uint64_t(0);
   int quietSolves_ = kQuietSolves;  // the start counts as quiet
   int solves_ = 0;

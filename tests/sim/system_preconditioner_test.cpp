@@ -269,6 +269,35 @@ TEST(SystemPreconditioner, TheElementsOwnStiffnessIsAdoptedAfterAQuietStart) {
   EXPECT_LT(*after, *before);
 }
 
+TEST(SystemPreconditioner, APinEditGivesUpTheElementsOwnStiffnessAndWaitsForQuietAgain) {
+  auto model = stiffBlock3();
+  ASSERT_TRUE(model);
+  Simulator simulator(*model);
+  pinTheBottomUnderGravity(simulator);
+  // The rest-stiffness factor is started at the second solve, for these pins.
+  for (int k = 0; k < 5; ++k) ASSERT_TRUE(simulator.step().ok);
+  EXPECT_EQ(simulator.preconditionerStats().givenUp, 0);
+  // A pin edit makes it useless: given up at that solve, not waited for at its turn (solve 22).
+  const uint32_t top = uint32_t(model->numControlPoints() - 1);
+  simulator.setFixed(top, true);
+  ASSERT_TRUE(simulator.step().ok);
+  EXPECT_EQ(simulator.preconditionerStats().givenUp, 1);
+  // Started again once the pins have stayed put for 30 solves, the edit's own counted (solve
+  // 35; the new stand-in factor, adopted at solve 14, changes nothing), and adopted 20 solves
+  // after that.
+  int adoptedAt = 0;
+  for (int solve = 7; solve <= 70 && !adoptedAt; ++solve) {
+    const StepReport report = simulator.step();
+    ASSERT_TRUE(report.ok) << report.message;
+    EXPECT_LE(report.residual, simulator.settings().implicitTolerance);
+    if (simulator.preconditionerStats().restStiffness) adoptedAt = solve;
+  }
+  std::printf("[ pin edit ] rest stiffness adopted at solve %d\n", adoptedAt);
+  EXPECT_EQ(adoptedAt, 55);
+  EXPECT_EQ(simulator.preconditionerStats().givenUp, 1);
+  EXPECT_EQ(simulator.preconditionerStats().restStiffnessFactorizations, 1);
+}
+
 TEST(SystemPreconditioner, TheWindowTakesTheElementsOwnStiffnessAsSoonAsItIsReady) {
   auto model = stiffBlock3();
   ASSERT_TRUE(model);
