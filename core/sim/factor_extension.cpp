@@ -24,15 +24,27 @@ bool FactorExtension::build(const SparseCholesky& factor, const Eigen::SparseMat
   // B is sparse (the factored coordinates next to the added ones): kept so, and dense only as
   // the solve's right-hand sides.
   coupling_ = restrictedMatrix(S, factored, added);
-  Eigen::MatrixXd C = Eigen::MatrixXd(restrictedMatrix(S, added, added));
-  if (n > 0) {
-    factor.solve(Eigen::MatrixXd(coupling_), solved_);
-    C.noalias() -= coupling_.transpose() * solved_;
-  } else {
-    solved_.resize(0, m);
-  }
-  complement_.compute(C);
-  if (complement_.info() != Eigen::Success) {
+  const Eigen::MatrixXd S_UU = Eigen::MatrixXd(restrictedMatrix(S, added, added));
+  // The complement's pivots against S_UU's diagonal: how much of S_UU the coupling cancels.
+  // Each pivot keeps the rounding of Z times the inverse of that ratio.
+  auto complement = [&](SparseCholesky::Precision precision) {
+    if (n > 0) {
+      factor.solve(Eigen::MatrixXd(coupling_), solved_, precision);
+      // B^T Z as (Z^T B)^T: each of B's nonzeros adds a contiguous row of Z^T's columns.
+      const Eigen::MatrixXd solvedTransposed = solved_.transpose();
+      complement_.compute(S_UU - solvedTransposed * coupling_);
+    } else {
+      solved_.resize(0, m);
+      complement_.compute(S_UU);
+    }
+    if (complement_.info() != Eigen::Success) return 0.0;
+    const Eigen::MatrixXd& L = complement_.matrixLLT();
+    return (L.diagonal().array().square() / S_UU.diagonal().array()).minCoeff();
+  };
+  // Z in single precision is close enough for a preconditioner unless the coupling cancels
+  // most of a pivot (a nearly singular S); then in double.
+  if (complement(SparseCholesky::Precision::Single) < kLeastPivotRatioInSingle &&
+      complement(SparseCholesky::Precision::Double) <= 0.0) {
     clear();
     return false;
   }

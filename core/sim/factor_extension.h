@@ -51,6 +51,9 @@ class FactorExtension {
   Eigen::MatrixXd solved_;    // Z = S_FF^-1 B
   Eigen::LLT<Eigen::MatrixXd> complement_;
   SparseCholesky uncoupled_;  // S_UU, for the uncoupled form
+  // Z is solved in single precision (a 1e-7 relative error) unless a pivot of the complement
+  // comes out below this share of S_UU's diagonal entry: then in double.
+  static constexpr double kLeastPivotRatioInSingle = 1e-3;
 };
 
 }  // namespace sculpt

@@ -39,53 +39,74 @@ void SinglePrecisionFactor::copy(const cholmod_factor& L) {
   work_.resize(n_);
 }
 
-bool SinglePrecisionFactor::solve(const Eigen::VectorXd& r, Eigen::VectorXd& z) const {
+// Solves (L L^T) Y = P R, in place in y (R permuted and scaled), supernode by supernode: the
+// diagonal block, then the rows below it; a vector (the preconditioner's solve) or a matrix
+// (many right-hand sides: each supernode's products become matrix-matrix products).
+template <typename Work>
+void SinglePrecisionFactor::solveInPlace(Work& y, Work& below) const {
   using Block = Eigen::Map<const Eigen::MatrixXf, 0, Eigen::OuterStride<>>;
-  // r / 2^f with 2^f near max |r|: (L L^T)^-1 r = 2^(f - 2e) (L' L'^T)^-1 (r / 2^f), L' = L / 2^e.
-  const double largest = r.size() ? r.cwiseAbs().maxCoeff() : 0.0;
-  if (!std::isfinite(largest)) return false;
-  if (largest == 0.0) {
-    z.setZero(n_);
-    return true;
-  }
-  int exponent = 0;
-  std::frexp(largest, &exponent);
-  Eigen::VectorXf& y = work_;
-  for (Eigen::Index k = 0; k < n_; ++k)
-    y[k] = static_cast<float>(std::ldexp(r[permutation_[size_t(k)]], -exponent));
   const size_t supernodes = firstColumn_.size() - 1;
-  // L y = P r, supernode by supernode: the diagonal block, then the rows below it.
   for (size_t sn = 0; sn < supernodes; ++sn) {
     const int first = firstColumn_[sn], columns = firstColumn_[sn + 1] - first;
-    const int rows = rowsBegin_[sn + 1] - rowsBegin_[sn], below = rows - columns;
+    const int rows = rowsBegin_[sn + 1] - rowsBegin_[sn], belowRows = rows - columns;
     const Block block(values_.data() + valuesBegin_[sn], rows, columns, Eigen::OuterStride<>(rows));
-    auto head = y.segment(first, columns);
-    block.topRows(columns).triangularView<Eigen::Lower>().solveInPlace(head);
-    if (below == 0) continue;
-    below_.noalias() = block.bottomRows(below) * head;
+    auto head = y.middleRows(first, columns);
+    block.topRows(columns).template triangularView<Eigen::Lower>().solveInPlace(head);
+    if (belowRows == 0) continue;
+    below.noalias() = block.bottomRows(belowRows) * head;
     const int* index = rows_.data() + rowsBegin_[sn] + columns;
-    for (int i = 0; i < below; ++i) y[index[i]] -= below_[i];
+    for (int i = 0; i < belowRows; ++i) y.row(index[i]) -= below.row(i);
   }
   // L^T y = y, in reverse.
   for (size_t sn = supernodes; sn-- > 0;) {
     const int first = firstColumn_[sn], columns = firstColumn_[sn + 1] - first;
-    const int rows = rowsBegin_[sn + 1] - rowsBegin_[sn], below = rows - columns;
+    const int rows = rowsBegin_[sn + 1] - rowsBegin_[sn], belowRows = rows - columns;
     const Block block(values_.data() + valuesBegin_[sn], rows, columns, Eigen::OuterStride<>(rows));
-    auto head = y.segment(first, columns);
-    if (below > 0) {
-      below_.resize(below);
+    auto head = y.middleRows(first, columns);
+    if (belowRows > 0) {
+      below.resize(belowRows, y.cols());
       const int* index = rows_.data() + rowsBegin_[sn] + columns;
-      for (int i = 0; i < below; ++i) below_[i] = y[index[i]];
-      head.noalias() -= block.bottomRows(below).transpose() * below_;
+      for (int i = 0; i < belowRows; ++i) below.row(i) = y.row(index[i]);
+      head.noalias() -= block.bottomRows(belowRows).transpose() * below;
     }
-    block.topRows(columns).triangularView<Eigen::Lower>().transpose().solveInPlace(head);
+    block.topRows(columns).template triangularView<Eigen::Lower>().transpose().solveInPlace(head);
   }
+}
+
+template <typename Dense, typename Work>
+bool SinglePrecisionFactor::solveScaled(const Dense& r, Dense& z, Work& y, Work& below) const {
+  // r / 2^f with 2^f near max |r|: (L L^T)^-1 r = 2^(f - 2e) (L' L'^T)^-1 (r / 2^f), L' = L / 2^e.
+  const double largest = r.size() ? r.cwiseAbs().maxCoeff() : 0.0;
+  if (!std::isfinite(largest)) return false;
+  if (largest == 0.0) {
+    z.setZero(n_, r.cols());
+    return true;
+  }
+  int exponent = 0;
+  std::frexp(largest, &exponent);
+  y.resize(n_, r.cols());
+  for (Eigen::Index k = 0; k < n_; ++k)
+    y.row(k) = r.row(permutation_[size_t(k)]).unaryExpr([&](double v) {
+      return static_cast<float>(std::ldexp(v, -exponent));
+    });
+  solveInPlace(y, below);
   if (!y.allFinite()) return false;
-  z.resize(n_);
+  z.resize(n_, r.cols());
   const int back = exponent - 2 * exponent_;
   for (Eigen::Index k = 0; k < n_; ++k)
-    z[permutation_[size_t(k)]] = std::ldexp(static_cast<double>(y[k]), back);
+    z.row(permutation_[size_t(k)]) =
+        y.row(k).unaryExpr([&](float v) { return std::ldexp(static_cast<double>(v), back); });
   return true;
+}
+
+bool SinglePrecisionFactor::solve(const Eigen::VectorXd& r, Eigen::VectorXd& z) const {
+  return solveScaled(r, z, work_, below_);
+}
+
+bool SinglePrecisionFactor::solve(const Eigen::MatrixXd& R, Eigen::MatrixXd& Z) const {
+  // Row-major: a row of L's structure scatters to (and gathers from) one contiguous row.
+  Eigen::Matrix<float, Eigen::Dynamic, Eigen::Dynamic, Eigen::RowMajor> y, below;
+  return solveScaled(R, Z, y, below);
 }
 
 }  // namespace sculpt

@@ -22,8 +22,16 @@ class SinglePrecisionFactor {
   /// undefined) when a value left single precision's range: the caller solves in double.
   /// Not reentrant: it works in the object's own vectors.
   bool solve(const Eigen::VectorXd& r, Eigen::VectorXd& z) const;
+  /// Z = (L L^T)^-1 R for many right-hand sides at once, likewise (the columns share one
+  /// scaling). Reentrant.
+  bool solve(const Eigen::MatrixXd& R, Eigen::MatrixXd& Z) const;
 
  private:
+  template <typename Work>
+  void solveInPlace(Work& y, Work& below) const;
+  template <typename Dense, typename Work>
+  bool solveScaled(const Dense& r, Dense& z, Work& y, Work& below) const;
+
   Eigen::Index n_ = 0;
   int exponent_ = 0;              // values_ hold L / 2^exponent_
   std::vector<int> permutation_;  // row k of P S P^T is row permutation_[k] of S

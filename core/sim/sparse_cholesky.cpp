@@ -138,9 +138,14 @@ void SparseCholesky::solve(const Eigen::VectorXd& r, Eigen::VectorXd& z) const {
   if (impl_->single.empty() || !impl_->single.solve(r, z)) z = impl_->supernodal.solve(r);
 }
 
-void SparseCholesky::solve(const Eigen::MatrixXd& R, Eigen::MatrixXd& Z) const {
-  if (method_ == Method::Simplicial) Z = impl_->simplicial.solve(R);
-  else Z = impl_->supernodal.solve(R);
+void SparseCholesky::solve(const Eigen::MatrixXd& R, Eigen::MatrixXd& Z,
+                           Precision precision) const {
+  if (method_ == Method::Simplicial) {
+    Z = impl_->simplicial.solve(R);
+    return;
+  }
+  if (precision == Precision::Double || impl_->single.empty() || !impl_->single.solve(R, Z))
+    Z = impl_->supernodal.solve(R);
 }
 
 long long SparseCholesky::factorNonZeros() const {

@@ -33,9 +33,12 @@ class SparseCholesky {
   /// z = S^-1 r. Requires valid(). The supernodal factor solves in single precision
   /// (single_precision_factor.h): z is S^-1 r to about 1e-6 relative, for a preconditioner.
   void solve(const Eigen::VectorXd& r, Eigen::VectorXd& z) const;
-  /// Z = S^-1 R for many right-hand sides at once, in double precision (the supernodal factor
-  /// solves them with matrix-matrix products). Requires valid().
-  void solve(const Eigen::MatrixXd& R, Eigen::MatrixXd& Z) const;
+  enum class Precision { Single, Double };
+  /// Z = S^-1 R for many right-hand sides at once, with matrix-matrix products in each
+  /// supernode; the supernodal factor, like solve(r), in single precision unless asked for
+  /// double (the simplicial one always in double). Requires valid().
+  void solve(const Eigen::MatrixXd& R, Eigen::MatrixXd& Z,
+             Precision precision = Precision::Single) const;
   /// Nonzeros of L (a measure of the factor's memory and of one solve's cost).
   long long factorNonZeros() const;
 

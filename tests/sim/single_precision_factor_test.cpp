@@ -4,6 +4,7 @@
 #include <gtest/gtest.h>
 
 #include <Eigen/SparseCholesky>
+#include <cmath>
 #include <cstdio>
 #include <vector>
 
@@ -32,6 +33,28 @@ TEST(SinglePrecisionFactor, SolvesToSinglePrecisionOfTheDoubleFactor) {
   std::printf("[ measured ] single-precision solve: relative difference %.2e\n", difference);
   EXPECT_LT(difference, 1e-5);
   EXPECT_GT(difference, 1e-9);  // the single-precision solve ran, not the double one
+}
+
+TEST(SinglePrecisionFactor, SolvesManyRightHandSidesAtOnceToSinglePrecision) {
+  // Columns a thousand times apart share one scaling; each keeps single precision's accuracy.
+  const Eigen::SparseMatrix<double> S = test::gridLaplacian(14, 0.05);
+  Eigen::MatrixXd R(S.rows(), 4);
+  for (Eigen::Index j = 0; j < R.cols(); ++j)
+    R.col(j) = test::randomVector(S.rows(), unsigned(11 + j)) * std::pow(1e3, double(j) - 1);
+  SparseCholesky supernodal(SparseCholesky::Method::Supernodal);
+  ASSERT_TRUE(supernodal.factor(S));
+  Eigen::MatrixXd Z;
+  supernodal.solve(R, Z);
+  ASSERT_EQ(Z.rows(), S.rows());
+  ASSERT_EQ(Z.cols(), R.cols());
+  const Eigen::SimplicialLLT<Eigen::SparseMatrix<double>> exact(S);
+  for (Eigen::Index j = 0; j < R.cols(); ++j) {
+    const Eigen::VectorXd reference = exact.solve(Eigen::VectorXd(R.col(j)));
+    const double difference = (Z.col(j) - reference).norm() / reference.norm();
+    std::printf("[ measured ] column %ld: relative difference %.2e\n", long(j), difference);
+    EXPECT_LT(difference, 1e-5);
+    EXPECT_GT(difference, 1e-9);  // solved in single precision
+  }
 }
 
 TEST(SinglePrecisionFactor, KeepsItsAccuracyForMatricesOfAnyScale) {
