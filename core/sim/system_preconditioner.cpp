@@ -273,6 +273,9 @@ void SystemPreconditioner::adoptFromWorker(std::unique_ptr<Factor> factor,
   if (!factor || (factor_ && !std::equal(factor->scales, factor->scales + 3, factor_->scales)))
     return;
   if (factor->restStiffness && (!factor->valid || factor->freeDofs != freeDofs)) return;
+  // Pins edited back since it was started (a pin made and released): the factor in use fits
+  // them, and the new one would need extending.
+  if (factor_ && factor_->freeDofs == freeDofs && factor->freeDofs != freeDofs) return;
   adopt(std::move(factor));
   ++stats_.backgroundFactorizations;
 }

@@ -129,6 +129,21 @@ TEST(SystemPreconditioner, PinEditsAreServedByTheOldFactorUntilTheNewOneIsAdopte
   EXPECT_EQ(simulator.preconditionerStats().backgroundFactorizations, 1);
 }
 
+TEST(SystemPreconditioner, AFactorForPinsEditedBackIsNotAdopted) {
+  auto model = test::buildModel(test::block3(), 1, false);
+  ASSERT_TRUE(model);
+  auto pinned = allDofs(*model, 16), released = allDofs(*model, 10);
+  SystemPreconditioner preconditioner;
+  ASSERT_TRUE(preconditioner.update(*model, 3600, 60, 1, released));
+  // Six points pinned: a factor for them is started on the worker. Released again at the next
+  // solve: the factor in use fits, and the worker's, made for the pins, would need extending.
+  ASSERT_TRUE(preconditioner.update(*model, 3600, 60, 1, pinned));
+  for (int solve = 0; solve < 10; ++solve)
+    ASSERT_TRUE(preconditioner.update(*model, 3600, 60, 1, released));
+  EXPECT_EQ(preconditioner.stats().factorizations, 1);
+  EXPECT_EQ(preconditioner.stats().extensions, 0);
+}
+
 TEST(SystemPreconditioner, TheFirstFactorPreparedOnAWorkerIsTheSameBits) {
   auto model = test::buildModel(test::block3(), 1, false);
   ASSERT_TRUE(model);
