@@ -43,8 +43,10 @@ bool FactorExtension::build(const SparseCholesky& factor, const Eigen::SparseMat
   };
   // Z in single precision is close enough for a preconditioner unless the coupling cancels
   // most of a pivot (a nearly singular S); then in double.
-  if (complement(SparseCholesky::Precision::Single) < kLeastPivotRatioInSingle &&
-      complement(SparseCholesky::Precision::Double) <= 0.0) {
+  double leastPivotRatio = complement(SparseCholesky::Precision::Single);
+  if (leastPivotRatio < kLeastPivotRatioInSingle)
+    leastPivotRatio = complement(SparseCholesky::Precision::Double);
+  if (leastPivotRatio <= 0.0) {  // not positive definite
     clear();
     return false;
   }

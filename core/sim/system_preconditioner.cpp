@@ -269,13 +269,16 @@ void SystemPreconditioner::startBackground(const FemModel& model, double a, doub
 void SystemPreconditioner::adoptFromWorker(std::unique_ptr<Factor> factor,
                                            const std::vector<int>& freeDofs) {
   // A factor made for another time step is of no use (sub-steps refactor on the spot); nor is a
-  // rest-stiffness factor that failed, or one made for pins edited since.
+  // rest-stiffness factor that failed.
   if (!factor || (factor_ && !std::equal(factor->scales, factor->scales + 3, factor_->scales)))
     return;
-  if (factor->restStiffness && (!factor->valid || factor->freeDofs != freeDofs)) return;
-  // Pins edited back since it was started (a pin made and released): the factor in use fits
-  // them, and the new one would need extending.
-  if (factor_ && factor_->freeDofs == freeDofs && factor->freeDofs != freeDofs) return;
+  if (factor->restStiffness && !factor->valid) return;
+  // Nor one made for pins edited since, unless it is a stand-in and the factor in use does not
+  // fit the pins either (pins edited back, a pin made and released: the new one would need
+  // extending where the one in use serves them as they are).
+  if (factor->freeDofs != freeDofs &&
+      (factor->restStiffness || (factor_ && factor_->freeDofs == freeDofs)))
+    return;
   adopt(std::move(factor));
   ++stats_.backgroundFactorizations;
 }
@@ -285,7 +288,8 @@ bool SystemPreconditioner::update(const FemModel& model, double massScale, doubl
   if (!std::is_sorted(freeDofs.begin(), freeDofs.end()))
     throw std::invalid_argument("SystemPreconditioner: free coordinates must be increasing");
   const double scales[3] = {massScale, dampingScale, stiffnessScale};
-  if (solves_ > 0 && freeDofs != freeDofs_) giveUpRestStiffness();
+  const bool pinsEdited = freeDofs != freeDofs_;  // or the first solve
+  if (pinsEdited && solves_ > 0) giveUpRestStiffness();
   std::erase_if(abandoned_, [](const std::unique_ptr<WorkerFactor>& w) { return w->finished(); });
   if (pending_)
     if (std::unique_ptr<Factor> factor = pending_->takeWhenDue(reproducible_))
@@ -302,8 +306,7 @@ bool SystemPreconditioner::update(const FemModel& model, double massScale, doubl
   ++solves_;
   countQuietSolves(model);
   upgradeToRestStiffness(model, freeDofs);
-  if (appliedMaterialVersion_ != model.materialVersion() || freeDofs_ != freeDofs)
-    rescale(model, freeDofs);
+  if (appliedMaterialVersion_ != model.materialVersion() || pinsEdited) rescale(model, freeDofs);
   chooseRotation(model);
   return factor_->valid;
 }

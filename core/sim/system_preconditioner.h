@@ -175,8 +175,8 @@ class SystemPreconditioner {
   static constexpr int kQuietSolves = 30;
   static constexpr int kUpgradeDelayLeast = 20;
   // Extending the factor through the Schur complement: at most this many coordinates, and
-  // this many multiply-adds for its solves (the bunny's top quarter released, 360 coordinates:
-  // 3.2e8, 20-90 ms); beyond, the extension is uncoupled.
+  // this many multiply-adds for its solves (the bunny's top quarter released, 360 coordinates
+  // and a factor of 1,233: 2.6e8, 15-21 ms); beyond, the extension is uncoupled.
   static constexpr size_t kMostCoupledCoordinates = 1500;
   static constexpr double kMostCouplingCost = 4e8;
   // Every this many solves, one goes the way not preferred.
