@@ -11,6 +11,7 @@
 #include <string>
 #include <vector>
 
+#include "allocator/program_allocator.h"
 #include "cli/bench_timing.h"
 #include "cli/cli_common.h"
 #include "cli/fem_options.h"
@@ -230,6 +231,7 @@ int benchAndPrint(Simulator& simulator, const BenchRun& run, std::optional<doubl
   if (run.pinEvery > 0)
     std::cout << "pin_edits=" << f.pinEdits << " warmup_pin_edits=" << f.warmupPinEdits
               << " pinned_points=" << f.pinnedPoints << '\n';
+  std::cout << app::allocatorLine() << '\n';
   const ElementCounts counts = model.mesh().counts();
   char mean[32], passes[32];
   std::snprintf(mean, sizeof mean, "%.1f", f.meanCgIterations);

@@ -11,6 +11,7 @@
 #include <filesystem>
 #include <iostream>
 
+#include "allocator/program_allocator.h"
 #include "render/image_downsample.h"
 #include "render/offscreen_target.h"
 #include "render/png_image.h"
@@ -224,6 +225,7 @@ int SculptApp::runBenchmark() {
                      camera_.projection(aspect), 15);
   const SceneGeometry& g = *view_.geometry();
   for (const auto& [stage, ms] : controller_->buildStatus().stageMs) std::cout << "stage " << stage << ": " << ms << " ms\n";
+  std::cout << allocatorLine() << '\n';
   std::cout << "first_frame_s=" << firstFrameSeconds_ << " frames=" << options_.benchFrames
             << " size=" << width << "x" << height << " triangles=" << view_.numTriangles()
             << " vertices=" << g.restPositions.rows() << " nodes=" << g.cellMesh.numNodes()

@@ -1,18 +1,20 @@
 // sculpt-cli bench fem end to end: the step figures of the last line (first step, median, 99th
-// percentile, maximum, the elastic pass and the step in elastic passes), stiffness or density
-// dabs painted with --paint-every, a scene instead of a control mesh, and bad options as usage
-// errors.
+// percentile, maximum, the elastic pass and the step in elastic passes), the allocator and its
+// huge pages, stiffness or density dabs painted with --paint-every, a scene instead of a control
+// mesh, and bad options as usage errors.
 
 #include <gtest/gtest.h>
 
 #include <cmath>
 #include <cstdlib>
+#include <fstream>
 #include <map>
 #include <sstream>
 #include <string>
 #include <vector>
 
 #include "support/cli_fixture.h"
+#include "support/scoped_environment.h"
 
 namespace sculpt::test {
 namespace {
@@ -91,6 +93,51 @@ TEST_F(BenchFemCliTest, BenchFemReportsStepFigures) {
   EXPECT_GT(v.at("cg_iterations"), 0);
   EXPECT_NE(result.out.find(" paint_every=0\n"), std::string::npos) << result.out;
   EXPECT_EQ(lineStartingWith(result.out, "dabs"), "") << result.out;
+}
+
+// The kernel's transparent-huge-page mode, the bracketed word of its setting ("" if unknown).
+std::string systemHugePageMode() {
+  std::ifstream in("/sys/kernel/mm/transparent_hugepage/enabled");
+  std::string setting;
+  std::getline(in, setting);
+  const std::size_t open = setting.find('['), close = setting.find(']');
+  if (open == std::string::npos || close == std::string::npos || close < open) return "";
+  return setting.substr(open + 1, close - open - 1);
+}
+
+// The allocator line: jemalloc in huge pages where the build links it, and what that gives:
+// more of the process' memory in huge pages than the same run with jemalloc told not to use
+// them (MALLOC_CONF overrides the program's own settings).
+TEST_F(BenchFemCliTest, BenchFemReportsItsAllocatorAndItsHugePages) {
+  const std::string args = quote(kAssets + "block3.json") + " --levels 2 --steps 2";
+  CliResult result;
+  bench(args, &result);
+  const std::string line = lineStartingWith(result.out, "allocator");
+  ASSERT_FALSE(line.empty()) << result.out;
+  const KeyValues pairs = keyValues(line);
+  EXPECT_EQ(keysOf(pairs),
+            (std::vector<std::string>{"allocator", "thp", "huge_pages_mb", "peak_rss_mb"}));
+  std::map<std::string, std::string> text(pairs.begin(), pairs.end());
+  const double hugeMb = std::stod(text["huge_pages_mb"]);
+  EXPECT_GT(std::stod(text["peak_rss_mb"]), 20.0) << line;  // block3 at level 2: about 80 MB
+  if (!SCULPT_EXPECT_JEMALLOC) {
+    EXPECT_EQ(text["allocator"], "system") << line;
+    return;
+  }
+  EXPECT_EQ(text["allocator"], "jemalloc") << line;
+  EXPECT_EQ(text["thp"], "always") << line;
+  if (systemHugePageMode() == "never") return;  // the kernel gives none to anyone
+
+  const ScopedEnvironment without("MALLOC_CONF", "thp:never");
+  CliResult small;
+  bench(args, &small);
+  const std::string smallLine = lineStartingWith(small.out, "allocator");
+  std::map<std::string, std::string> smallText;
+  for (const auto& [key, value] : keyValues(smallLine)) smallText[key] = value;
+  EXPECT_EQ(smallText["thp"], "never") << smallLine;
+  // 58 MB against 10 MB (the rest is mapped by libraries that ask for huge pages themselves).
+  EXPECT_GT(hugeMb, 2.0 * std::stod(smallText["huge_pages_mb"]) + 8.0)
+      << line << "\n" << smallLine;
 }
 
 TEST_F(BenchFemCliTest, BenchFemPaintEveryPaintsDeterministicDabs) {
