@@ -116,6 +116,11 @@ Columns columnsInParallel(uint32_t n, size_t rows, bool sorted, bool keepZeros,
     }
   });
   Columns all;
+  size_t entries = 0;
+  for (const Columns& part : parts) entries += part.rows.size();
+  all.begin.reserve(size_t(n) + 1);
+  all.rows.reserve(entries);
+  all.values.reserve(entries);
   for (const Columns& part : parts) {
     const int64_t offset = int64_t(all.rows.size());
     for (size_t k = 1; k < part.begin.size(); ++k) all.begin.push_back(offset + part.begin[k]);
