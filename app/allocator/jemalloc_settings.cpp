@@ -1,4 +1,4 @@
-// jemalloc's settings for our programs, read by jemalloc before the first allocation (its
+// jemalloc's settings for sculpt-cli, read by jemalloc before the first allocation (its
 // manual, "malloc_conf"); the MALLOC_CONF environment variable still overrides them.
 //
 // thp:always asks the kernel for transparent huge pages for every mapping jemalloc makes, its

@@ -1,5 +1,5 @@
 // The allocator our programs run on and what it gave them, for benchmark lines and tests.
-// docs/memory.md says why sculpt and sculpt-cli use jemalloc with transparent huge pages.
+// docs/memory.md says why sculpt-cli uses jemalloc with transparent huge pages and the window not.
 #pragma once
 
 #include <string>
