@@ -23,7 +23,6 @@ PACKAGES=(
   nlohmann-json3-dev # JSON control meshes and scripts
   libsuitesparse-dev # CHOLMOD: the implicit solver's supernodal Cholesky preconditioner (core)
   libopenblas0-pthread # an optimised BLAS behind libblas.so.3 for CHOLMOD's dense blocks
-  libjemalloc-dev    # jemalloc in transparent huge pages for sculpt-cli (docs/memory.md)
   # Tool chain.
   cmake
   g++

@@ -6,12 +6,7 @@
 #include <fstream>
 #include <sstream>
 
-#include <cstddef>
-
-// jemalloc's control interface (its manual, "mallctl"), declared here so that its header, which
-// redeclares malloc and free, is not needed. Weak: null where jemalloc is not in the process.
-extern "C" int mallctl(const char* name, void* oldValue, std::size_t* oldLength, void* newValue,
-                       std::size_t newLength) __attribute__((weak));
+#include "allocator/huge_page_heap.h"
 
 namespace sculpt::app {
 namespace {
@@ -39,14 +34,12 @@ double peakResidentMb() {
 
 AllocatorReport allocatorReport() {
   AllocatorReport report;
-  report.name = "system";
-  report.hugePages = "none";
-  const char* thp = nullptr;
-  std::size_t length = sizeof thp;
-  if (mallctl != nullptr && mallctl("opt.thp", &thp, &length, nullptr, 0) == 0 && thp) {
-    report.name = "jemalloc";
-    report.hugePages = thp;
-  }
+#if defined(SCULPT_SANITIZED)
+  report.name = "sanitizer";
+#else
+  report.name = "glibc";
+#endif
+  report.hugePageHeap = heapUsesHugePages();
   report.hugePagesMb = anonymousHugePagesMb();
   report.peakRssMb = peakResidentMb();
   return report;
@@ -55,8 +48,9 @@ AllocatorReport allocatorReport() {
 std::string allocatorLine() {
   const AllocatorReport report = allocatorReport();
   char text[160];
-  std::snprintf(text, sizeof text, "allocator=%s thp=%s huge_pages_mb=%.0f peak_rss_mb=%.0f",
-                report.name.c_str(), report.hugePages.c_str(), report.hugePagesMb,
+  std::snprintf(text, sizeof text,
+                "allocator=%s huge_page_heap=%d huge_pages_mb=%.0f peak_rss_mb=%.0f",
+                report.name.c_str(), report.hugePageHeap ? 1 : 0, report.hugePagesMb,
                 report.peakRssMb);
   return text;
 }

@@ -7,6 +7,7 @@
 #include <string>
 #include <vector>
 
+#include "allocator/huge_page_heap.h"
 #include "cli/bench_table1.h"
 #include "cli/cli_common.h"
 #include "cli/commands.h"
@@ -59,6 +60,7 @@ int dispatch(const std::vector<std::string>& args) {
 }  // namespace
 
 int main(int argc, char** argv) {
+  sculpt::app::useHugePageHeap(argv);
   // The subcommands report their own errors; this is the last line of defence.
   try {
     return dispatch(std::vector<std::string>(argv + 1, argv + argc));

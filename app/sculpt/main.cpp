@@ -19,13 +19,15 @@
 #include <stdexcept>
 #include <utility>
 
+#include "allocator/huge_page_heap.h"
 #include "project/preferences.h"
 #include "sculpt/options.h"
 #include "sculpt/scene_start.h"
 #include "sculpt/sculpt_app.h"
 
 int main(int argc, char** argv) {
-  const auto started = std::chrono::steady_clock::now();
+  // Timed from the first main(), before the heap's re-execution.
+  const auto started = sculpt::app::useHugePageHeap(argv);
   sculpt::app::Options options;
   try {
     bool help = false;

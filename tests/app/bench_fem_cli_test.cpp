@@ -105,39 +105,42 @@ std::string systemHugePageMode() {
   return setting.substr(open + 1, close - open - 1);
 }
 
-// The allocator line: jemalloc in huge pages where the build links it, and what that gives:
-// more of the process' memory in huge pages than the same run with jemalloc told not to use
-// them (MALLOC_CONF overrides the program's own settings).
-TEST_F(BenchFemCliTest, BenchFemReportsItsAllocatorAndItsHugePages) {
+// The allocator line: glibc's heap set for huge pages (the program re-executes itself with its
+// tunables), and what that gives: more of the process' memory in huge pages than the same run
+// on the heap as it comes (SCULPT_SYSTEM_HEAP).
+TEST_F(BenchFemCliTest, BenchFemReportsItsHeapAndItsHugePages) {
   const std::string args = quote(kAssets + "block3.json") + " --levels 2 --steps 2";
-  CliResult result;
-  bench(args, &result);
-  const std::string line = lineStartingWith(result.out, "allocator");
-  ASSERT_FALSE(line.empty()) << result.out;
-  const KeyValues pairs = keyValues(line);
-  EXPECT_EQ(keysOf(pairs),
-            (std::vector<std::string>{"allocator", "thp", "huge_pages_mb", "peak_rss_mb"}));
-  std::map<std::string, std::string> text(pairs.begin(), pairs.end());
-  const double hugeMb = std::stod(text["huge_pages_mb"]);
-  EXPECT_GT(std::stod(text["peak_rss_mb"]), 20.0) << line;  // block3 at level 2: about 80 MB
-  if (!SCULPT_EXPECT_JEMALLOC) {
-    EXPECT_EQ(text["allocator"], "system") << line;
-    return;
+  const auto allocatorLine = [&](std::map<std::string, std::string>& text) {
+    CliResult result;
+    bench(args, &result);
+    const std::string line = lineStartingWith(result.out, "allocator");
+    const KeyValues pairs = keyValues(line);
+    EXPECT_EQ(keysOf(pairs), (std::vector<std::string>{"allocator", "huge_page_heap",
+                                                       "huge_pages_mb", "peak_rss_mb"}))
+        << result.out;
+    text = std::map<std::string, std::string>(pairs.begin(), pairs.end());
+    EXPECT_GT(std::stod(text["peak_rss_mb"]), 20.0) << line;  // block3 at level 2: about 60 MB
+    return line;
+  };
+  std::map<std::string, std::string> tuned, plain;
+  const std::string tunedLine = allocatorLine(tuned);
+  std::string plainLine;
+  {
+    const ScopedEnvironment systemHeap("SCULPT_SYSTEM_HEAP", "1");
+    plainLine = allocatorLine(plain);
   }
-  EXPECT_EQ(text["allocator"], "jemalloc") << line;
-  EXPECT_EQ(text["thp"], "always") << line;
+  EXPECT_EQ(plain["huge_page_heap"], "0") << plainLine;
+#if SCULPT_EXPECT_HUGE_PAGE_HEAP
+  EXPECT_EQ(tuned["allocator"], "glibc") << tunedLine;
+  EXPECT_EQ(tuned["huge_page_heap"], "1") << tunedLine;
   if (systemHugePageMode() == "never") return;  // the kernel gives none to anyone
-
-  const ScopedEnvironment without("MALLOC_CONF", "thp:never");
-  CliResult small;
-  bench(args, &small);
-  const std::string smallLine = lineStartingWith(small.out, "allocator");
-  std::map<std::string, std::string> smallText;
-  for (const auto& [key, value] : keyValues(smallLine)) smallText[key] = value;
-  EXPECT_EQ(smallText["thp"], "never") << smallLine;
-  // 58 MB against 10 MB (the rest is mapped by libraries that ask for huge pages themselves).
-  EXPECT_GT(hugeMb, 2.0 * std::stod(smallText["huge_pages_mb"]) + 8.0)
-      << line << "\n" << smallLine;
+  // 64 MB against 0 on this project's VMs.
+  EXPECT_GT(std::stod(tuned["huge_pages_mb"]), 2.0 * std::stod(plain["huge_pages_mb"]) + 8.0)
+      << tunedLine << "\n" << plainLine;
+#else
+  EXPECT_EQ(tuned["allocator"], "sanitizer") << tunedLine;
+  EXPECT_EQ(tuned["huge_page_heap"], "0") << tunedLine;
+#endif
 }
 
 TEST_F(BenchFemCliTest, BenchFemPaintEveryPaintsDeterministicDabs) {
