@@ -4,6 +4,7 @@
 
 #include <cstdlib>
 #include <string>
+#include <string_view>
 
 namespace sculpt::app {
 namespace {
@@ -18,7 +19,18 @@ constexpr const char* kTunables =
 // was, or nothing>;<1 if it was set>".
 constexpr const char* kHandOver = "SCULPT_HUGE_PAGE_HEAP";
 
+constexpr std::string_view kHugePages = "glibc.malloc.hugetlb=";
+
 bool tuned = false;
+
+// Whether tunables set glibc.malloc.hugetlb to anything but 0 (the last setting counts).
+bool asksForHugePages(const char* tunables) {
+  if (!tunables) return false;
+  const std::string_view text = tunables;
+  const size_t at = text.rfind(kHugePages);
+  return at != std::string_view::npos && text.substr(at + kHugePages.size(), 1) != "0" &&
+         at + kHugePages.size() < text.size();
+}
 
 void restore(const char* name, const std::string& value, bool wasSet) {
   if (wasSet)
@@ -38,7 +50,7 @@ std::chrono::steady_clock::time_point useHugePageHeap(char** argv) {
     ::unsetenv(kHandOver);
     const size_t first = text.find(';'), last = text.rfind(';');
     if (first == std::string::npos || last == first) return now;
-    tuned = true;
+    tuned = asksForHugePages(std::getenv("GLIBC_TUNABLES"));
     restore("GLIBC_TUNABLES", text.substr(first + 1, last - first - 1),
             text.substr(last + 1) == "1");
     const long long ns = std::strtoll(text.substr(0, first).c_str(), nullptr, 10);
@@ -50,9 +62,8 @@ std::chrono::steady_clock::time_point useHugePageHeap(char** argv) {
 #else
   const char* given = std::getenv("GLIBC_TUNABLES");
   const std::string original = given ? given : "";
-  const size_t users = original.find("glibc.malloc.hugetlb=");
-  if (users != std::string::npos) {  // the user's own choice
-    tuned = original.compare(users + 21, 1, "0") != 0;
+  if (original.find(kHugePages) != std::string::npos) {  // the user's own choice
+    tuned = asksForHugePages(given);
     return now;
   }
   if (std::getenv("SCULPT_SYSTEM_HEAP") || !argv || !argv[0]) return now;
