@@ -19,6 +19,11 @@ constexpr const char* kTunables =
 // was, or nothing>;<1 if it was set>".
 constexpr const char* kHandOver = "SCULPT_HUGE_PAGE_HEAP";
 
+#if defined(SCULPT_SANITIZED)
+constexpr bool kSanitized = true;
+#else
+constexpr bool kSanitized = false;
+#endif
 constexpr std::string_view kHugePages = "glibc.malloc.hugetlb=";
 
 bool tuned = false;
@@ -57,9 +62,7 @@ std::chrono::steady_clock::time_point useHugePageHeap(char** argv) {
     const Clock::time_point began{std::chrono::nanoseconds(ns)};
     return began <= now ? began : now;
   }
-#if defined(SCULPT_SANITIZED)
-  return now;  // a sanitizer's allocator replaces malloc; the tunables would do nothing
-#else
+  if (kSanitized) return now;  // a sanitizer's allocator replaces malloc: nothing to tune
   const char* given = std::getenv("GLIBC_TUNABLES");
   const std::string original = given ? given : "";
   if (original.find(kHugePages) != std::string::npos) {  // the user's own choice
@@ -80,7 +83,6 @@ std::chrono::steady_clock::time_point useHugePageHeap(char** argv) {
   ::unsetenv(kHandOver);
   restore("GLIBC_TUNABLES", original, given != nullptr);
   return now;
-#endif
 }
 
 bool heapUsesHugePages() { return tuned; }
