@@ -10,6 +10,7 @@
 #include <vector>
 
 #include "fem/tricubic_kernel.h"
+#include "fem/node_slots.h"
 #include "sim/node_block_rows.h"
 
 namespace sculpt {
@@ -121,19 +122,42 @@ SparseMatrix reducedRestStiffness(const FemMesh& mesh, std::span<const LameParam
                                   const SparseMatrix& A, const std::atomic<bool>* stop) {
   SymmetricNodeBlocks nodes = symmetricNodePattern(
       mesh.numNodes(), mesh.numElements(), [&](uint32_t e) { return mesh.elementNodes(e); });
+  NodeBlockRows& K = nodes.K;
   TricubicStiffness tricubic(mesh, lame);
   std::vector<uint32_t> where(mesh.numNodes());
+  // Elements with a matrix of their own add it at once; those of a shared shape are added row
+  // by row below, so that a row's blocks stay in cache while every element around its node adds
+  // to them (element by element, each element's 2,080 blocks went to 64 rows of K, 62 MB on the
+  // bunny, at 24 ns a block).
+  std::vector<TricubicStiffness::Element> shared(mesh.numTricubic());
+  std::vector<uint8_t> ownMatrix(mesh.numTricubic(), 0);
   for (uint32_t e = 0; e < mesh.numTricubic(); ++e) {
     if (stop && e % 64 == 0 && *stop) return {};
     const TricubicStiffness::Element Ke = tricubic(e);
-    if (Ke.own) {
-      const auto own = [&](int a, int b) { return TricubicStiffness::blockOf(*Ke.own, a, b); };
-      addUpperBlocks(nodes, mesh.tricubicNodes[e], own, where);
-    } else {
-      addUpperBlocks(nodes, mesh.tricubicNodes[e], [&](int a, int b) -> Block {
-        const size_t ab = size_t(a * 64 + b);
-        return Ke.lambda * Ke.lambdaPart[ab] + Ke.mu * Ke.muPart[ab];
-      }, where);
+    if (!Ke.own) {
+      shared[e] = Ke;
+      continue;
+    }
+    ownMatrix[e] = 1;
+    const auto own = [&](int a, int b) { return TricubicStiffness::blockOf(*Ke.own, a, b); };
+    addUpperBlocks(nodes, mesh.tricubicNodes[e], own, where);
+  }
+  const NodeSlots around = nodeSlots(
+      mesh.numNodes(), mesh.numTricubic(),
+      [&](uint32_t e) { return std::span<const uint32_t>(mesh.tricubicNodes[e]); }, ownMatrix);
+  for (uint32_t n = 0; n < mesh.numNodes(); ++n) {
+    if (around.begin[n] == around.begin[n + 1]) continue;
+    if (stop && n % 256 == 0 && *stop) return {};
+    for (uint32_t k = nodes.diagonal[n]; k < K.begin[n + 1]; ++k) where[K.column[k]] = k;
+    for (uint32_t s = around.begin[n]; s < around.begin[n + 1]; ++s) {
+      const auto [e, a] = around.slots[s];
+      const TricubicStiffness::Element& Ke = shared[e];
+      const auto& ids = mesh.tricubicNodes[e];
+      const size_t row = size_t(a) * kTricubicNodes;
+      for (int b = 0; b < kTricubicNodes; ++b)  // the blocks on and above the diagonal
+        if (ids[size_t(b)] >= n)
+          K.block[where[ids[size_t(b)]]] +=
+              Ke.lambda * Ke.lambdaPart[row + size_t(b)] + Ke.mu * Ke.muPart[row + size_t(b)];
     }
   }
   for (uint32_t e = mesh.numTricubic(); e < mesh.numElements(); ++e) {
