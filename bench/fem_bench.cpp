@@ -328,5 +328,3 @@ void BM_PolarRotations(benchmark::State& state) {
 BENCHMARK(BM_PolarRotations)->Arg(1)->Arg(4)->Unit(benchmark::kMicrosecond);
 
 }  // namespace
-
-BENCHMARK_MAIN();

@@ -39,5 +39,3 @@ void BM_ApplyComposed(benchmark::State& state) {
 BENCHMARK(BM_ApplyComposed)->Arg(10)->Arg(12)->Unit(benchmark::kMicrosecond);
 
 }  // namespace
-
-BENCHMARK_MAIN();
