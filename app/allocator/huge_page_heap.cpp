@@ -33,8 +33,8 @@ bool asksForHugePages(const char* tunables) {
   if (!tunables) return false;
   const std::string_view text = tunables;
   const size_t at = text.rfind(kHugePages);
-  return at != std::string_view::npos && text.substr(at + kHugePages.size(), 1) != "0" &&
-         at + kHugePages.size() < text.size();
+  return at != std::string_view::npos && at + kHugePages.size() < text.size() &&
+         text[at + kHugePages.size()] != '0';
 }
 
 void restore(const char* name, const std::string& value, bool wasSet) {
