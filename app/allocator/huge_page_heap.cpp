@@ -87,4 +87,6 @@ std::chrono::steady_clock::time_point useHugePageHeap(char** argv) {
 
 bool heapUsesHugePages() { return tuned; }
 
+bool sanitizerAllocator() { return kSanitized; }
+
 }  // namespace sculpt::app

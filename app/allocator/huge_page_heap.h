@@ -17,4 +17,7 @@ std::chrono::steady_clock::time_point useHugePageHeap(char** argv);
 // Whether this process' malloc runs with those tunables.
 bool heapUsesHugePages();
 
+// Whether a sanitizer's allocator replaces malloc in this build (nothing to tune then).
+bool sanitizerAllocator();
+
 }  // namespace sculpt::app

@@ -34,11 +34,7 @@ double peakResidentMb() {
 
 AllocatorReport allocatorReport() {
   AllocatorReport report;
-#if defined(SCULPT_SANITIZED)
-  report.name = "sanitizer";
-#else
-  report.name = "glibc";
-#endif
+  report.name = sanitizerAllocator() ? "sanitizer" : "glibc";
   report.hugePageHeap = heapUsesHugePages();
   report.hugePagesMb = anonymousHugePagesMb();
   report.peakRssMb = peakResidentMb();

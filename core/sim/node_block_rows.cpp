@@ -31,11 +31,12 @@ SparseMatrix reduceNodeBlocks(const NodeBlockRows& K, const SparseMatrix& A) {
   std::vector<size_t> tBegin(size_t(numNodes) + 1, 0);
   std::vector<uint32_t> tColumn;
   std::vector<Eigen::Matrix3d> tBlock;
-  // T has about 1.4x K's blocks (block10 and the bunny at K = 1). Reserved, not touched: pages
-  // never written cost nothing, and growing by copies cost a first step 200-400 ms of page
-  // faults and copying on a machine where faults are dear (docs/BENCHMARKS.md).
-  tColumn.reserve(4 * K.column.size());
-  tBlock.reserve(4 * K.column.size());
+  // T had 1.4x K's blocks for the stand-in and 0.45x for the elements' own stiffness (the
+  // bunny at K = 1). Reserved, not touched: pages never written cost nothing, and growing by
+  // copies cost a first step 200-400 ms of page faults and copying on a machine where faults
+  // are dear (docs/BENCHMARKS.md).
+  tColumn.reserve(2 * K.column.size());
+  tBlock.reserve(2 * K.column.size());
   for (uint32_t n = 0; n < numNodes; ++n) {
     for (uint32_t k = K.begin[n]; k < K.begin[n + 1]; ++k)
       for (RowSparseMatrix::InnerIterator it(rowsOfA, K.column[k]); it; ++it)

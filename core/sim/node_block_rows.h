@@ -33,14 +33,23 @@ struct NodeBlockRows {
 struct SymmetricNodeBlocks {
   NodeBlockRows K;
   std::vector<uint32_t> diagonal;
+  NodeSlots around;  ///< the elements around each node, which the pattern was made from
 };
+
+/// where[m] = the place of node m in n's row, for every m >= n in it: where the blocks on and
+/// above the diagonal of n's row go.
+inline void placeUpperRow(const SymmetricNodeBlocks& nodes, uint32_t n,
+                          std::vector<uint32_t>& where) {
+  for (uint32_t k = nodes.diagonal[n]; k < nodes.K.begin[n + 1]; ++k) where[nodes.K.column[k]] = k;
+}
 
 /// The pattern of elements whose nodes are nodesOf(e), e < numElements.
 template <class NodesOf>
 SymmetricNodeBlocks symmetricNodePattern(uint32_t numNodes, uint32_t numElements,
                                          const NodesOf& nodesOf) {
-  const NodeSlots around = nodeSlots(numNodes, numElements, nodesOf);
   SymmetricNodeBlocks result;
+  result.around = nodeSlots(numNodes, numElements, nodesOf);
+  const NodeSlots& around = result.around;
   NodeBlockRows& K = result.K;
   result.diagonal.resize(numNodes);
   K.begin.reserve(size_t(numNodes) + 1);
@@ -78,8 +87,7 @@ void addUpperBlocks(SymmetricNodeBlocks& nodes, std::span<const uint32_t> ids,
   for (int i = 0; i < count; ++i) {
     const int a = order[size_t(i)];
     const uint32_t n = ids[size_t(a)];
-    // The places of the nodes after n in n's row, without a search per node.
-    for (uint32_t k = nodes.diagonal[n]; k < K.begin[n + 1]; ++k) where[K.column[k]] = k;
+    placeUpperRow(nodes, n, where);  // without a search per node
     for (int j = i; j < count; ++j) {
       const int b = order[size_t(j)];
       Eigen::Matrix3d& target = K.block[where[ids[size_t(b)]]];

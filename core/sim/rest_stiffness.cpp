@@ -10,7 +10,6 @@
 #include <vector>
 
 #include "fem/tricubic_kernel.h"
-#include "fem/node_slots.h"
 #include "sim/node_block_rows.h"
 
 namespace sculpt {
@@ -128,9 +127,8 @@ SparseMatrix reducedRestStiffness(const FemMesh& mesh, std::span<const LameParam
   // Elements with a matrix of their own add it at once; those of a shared shape are added row
   // by row below, so that a row's blocks stay in cache while every element around its node adds
   // to them (element by element, each element's 2,080 blocks went to 64 rows of K, 62 MB on the
-  // bunny, at 24 ns a block).
+  // bunny, at 24 ns a block). The shared parts' pointers mark them.
   std::vector<TricubicStiffness::Element> shared(mesh.numTricubic());
-  std::vector<uint8_t> ownMatrix(mesh.numTricubic(), 0);
   for (uint32_t e = 0; e < mesh.numTricubic(); ++e) {
     if (stop && e % 64 == 0 && *stop) return {};
     const TricubicStiffness::Element Ke = tricubic(e);
@@ -138,19 +136,16 @@ SparseMatrix reducedRestStiffness(const FemMesh& mesh, std::span<const LameParam
       shared[e] = Ke;
       continue;
     }
-    ownMatrix[e] = 1;
     const auto own = [&](int a, int b) { return TricubicStiffness::blockOf(*Ke.own, a, b); };
     addUpperBlocks(nodes, mesh.tricubicNodes[e], own, where);
   }
-  const NodeSlots around = nodeSlots(
-      mesh.numNodes(), mesh.numTricubic(),
-      [&](uint32_t e) { return std::span<const uint32_t>(mesh.tricubicNodes[e]); }, ownMatrix);
+  const NodeSlots& around = nodes.around;
   for (uint32_t n = 0; n < mesh.numNodes(); ++n) {
-    if (around.begin[n] == around.begin[n + 1]) continue;
     if (stop && n % 256 == 0 && *stop) return {};
-    for (uint32_t k = nodes.diagonal[n]; k < K.begin[n + 1]; ++k) where[K.column[k]] = k;
+    placeUpperRow(nodes, n, where);
     for (uint32_t s = around.begin[n]; s < around.begin[n + 1]; ++s) {
       const auto [e, a] = around.slots[s];
+      if (e >= mesh.numTricubic() || !shared[e].lambdaPart) continue;
       const TricubicStiffness::Element& Ke = shared[e];
       const auto& ids = mesh.tricubicNodes[e];
       const size_t row = size_t(a) * kTricubicNodes;

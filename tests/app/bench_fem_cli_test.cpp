@@ -1,5 +1,5 @@
 // sculpt-cli bench fem end to end: the step figures of the last line (first step, median, 99th
-// percentile, maximum, the elastic pass and the step in elastic passes), the allocator and its
+// percentile, maximum, the elastic pass and the step in elastic passes), the heap and its
 // huge pages, stiffness or density dabs painted with --paint-every, a scene instead of a control
 // mesh, and bad options as usage errors.
 
