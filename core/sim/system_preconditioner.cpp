@@ -372,12 +372,11 @@ void SystemPreconditioner::upgradeToRestStiffness(const FemModel& model,
   const double* scales = factor_->scales;
   Request request = requestFor(model, scales[0], scales[1], scales[2], freeDofs);
   request.restStiffness = true;
-  // Making it costs about 0.14 ms of a core per element (the bunny's 2,968: 0.4 s). A
-  // reproducible run waits for it at its turn; the bunny's turn, the 20th solve after its start,
-  // finds it ready when the steps are drawn one by one (sculpt --bench) and within a few steps
-  // of ready in a tight loop (sculpt-cli).
-  const int delay = std::max(kUpgradeDelayLeast, int(model.mesh().numElements() / 150));
-  upgrade_ = std::make_unique<WorkerFactor>(std::move(request), method_, delay);
+  // Making it costs about 0.12 ms of a core per element (the bunny's 2,968: 0.35 s). A
+  // reproducible run takes it at the same turn as any worker factor, waiting if it is late:
+  // steps drawn one by one (sculpt --bench) find it ready; a tight loop on two cores (sculpt-cli)
+  // gains nothing by stepping beside it, as the worker and the steps share the cores.
+  upgrade_ = std::make_unique<WorkerFactor>(std::move(request), method_, kDeterministicDelay);
 }
 
 void SystemPreconditioner::refactor(const FemModel& model) {

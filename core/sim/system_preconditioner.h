@@ -18,9 +18,8 @@
 //    the way that took fewer CG iterations is kept.
 //  - Those factors use the cheap stand-in for the stiffness (linear_stiffness.h). Once the
 //    materials and pins have stayed put for a while (from the start on), a time-stepping solve
-//    also has a factor with the elements' own rest stiffness made on a worker, and adopts it
-//    a longer number of solves later, fixed by the model's size: denser and slower to make, it
-//    saves CG iterations in every step after it.
+//    also has a factor with the elements' own rest stiffness made on a worker, adopted as the
+//    others are: denser and slower to make, it saves CG iterations in every step after it.
 
 #include <cstdint>
 #include <future>
@@ -170,10 +169,8 @@ class SystemPreconditioner {
   static constexpr int kDriftSlack = 4;
   // A factor started on the worker is adopted this many solves later.
   static constexpr int kDeterministicDelay = 8;
-  // The rest-stiffness factor: started after this many solves without a material or pin edit,
-  // adopted at least this many solves after it was started (more for a larger model).
+  // The rest-stiffness factor is started after this many solves without a material or pin edit.
   static constexpr int kQuietSolves = 30;
-  static constexpr int kUpgradeDelayLeast = 20;
   // Extending the factor through the Schur complement: at most this many coordinates, and
   // this many multiply-adds for its solves (the bunny's top quarter released, 360 coordinates
   // and a factor of 1,233: 2.6e8, 15-21 ms); beyond, the extension is uncoupled.
