@@ -143,7 +143,7 @@ SparseMatrix reducedLinearStiffness(const FemMesh& mesh, std::span<const LamePar
       return Ke.block<3, 3>(3 * a, 3 * b);
     }, where);
   }
-  return reduceNodeBlocks(mirrorUpperBlocks(nodes), A);
+  return reduceSymmetricNodeBlocks(nodes, A);
 }
 
 }  // namespace sculpt

@@ -6,66 +6,102 @@
 
 namespace sculpt {
 
-NodeBlockRows& mirrorUpperBlocks(SymmetricNodeBlocks& nodes) {
-  // Row m's blocks below its diagonal are those of the rows n < m that reach m, in increasing n.
-  NodeBlockRows& K = nodes.K;
-  std::vector<uint32_t> next(K.begin.begin(), K.begin.end() - 1);
-  for (uint32_t n = 0; n < K.numNodes(); ++n)
-    for (uint32_t k = nodes.diagonal[n] + 1; k < K.begin[n + 1]; ++k)
-      K.block[next[K.column[k]]++] = K.block[k].transpose();
-  return K;
-}
+namespace {
 
-SparseMatrix reduceNodeBlocks(const NodeBlockRows& K, const SparseMatrix& A) {
-  // S_ij = sum_nm A_ni K_nm A_mj on 3x3 blocks, in two sparse passes with dense row
-  // accumulators: T = K A row by row, then S = A^T T. As scalar sparse products it took 4x
-  // longer, most of a first step (block10 at K = 1: 260 ms).
+// A block-sparse matrix row by row: row r holds block[k] at column[k], k in [begin[r],
+// begin[r + 1]).
+struct BlockRows {
+  std::vector<size_t> begin{0};
+  std::vector<uint32_t> column;
+  std::vector<Eigen::Matrix3d> block;
+
+  // Ends the current row with the accumulator's sums.
+  void endRow(DenseAccumulator<Eigen::Matrix3d>& sum) {
+    sum.drain([&](uint32_t j, const Eigen::Matrix3d& b) {
+      column.push_back(j);
+      block.push_back(b);
+    });
+    begin.push_back(column.size());
+  }
+};
+
+}  // namespace
+
+SparseMatrix reduceSymmetricNodeBlocks(const SymmetricNodeBlocks& nodes, const SparseMatrix& A) {
+  // K = V + V^T, V being K's blocks above the diagonal and half of each diagonal block, so
+  // S = A^T K A = W + W^T with W = A^T V A. W takes two sparse passes over V with a dense row
+  // accumulator, T = V A row by row, then W = A^T T; S adds W's transpose. Reducing K whole
+  // (its lower blocks mirrored first) took 1.6x as long and twice K's memory; as scalar sparse
+  // products, 4x longer still (docs/BENCHMARKS.md).
+  const NodeBlockRows& K = nodes.K;
   const uint32_t numNodes = K.numNodes();
-  const Eigen::Index numControl = A.cols();
-  // A dense accumulator over the control points.
-  DenseAccumulator<Eigen::Matrix3d> sum(size_t(numControl), Eigen::Matrix3d::Zero());
+  const uint32_t numControl = uint32_t(A.cols());
+  DenseAccumulator<Eigen::Matrix3d> sum(numControl, Eigen::Matrix3d::Zero());
 
-  // T = K A: per node n, the blocks T_nj = sum_m K_nm A_mj.
+  // T = V A: per node n, the blocks T_nj = sum_m V_nm A_mj (row n of K starts with n itself).
   using RowSparseMatrix = Eigen::SparseMatrix<double, Eigen::RowMajor>;
   const RowSparseMatrix rowsOfA = A;
-  std::vector<size_t> tBegin(size_t(numNodes) + 1, 0);
-  std::vector<uint32_t> tColumn;
-  std::vector<Eigen::Matrix3d> tBlock;
-  // T had 1.4x K's blocks for the stand-in and 0.45x for the elements' own stiffness (the
-  // bunny at K = 1). Reserved, not touched: pages never written cost nothing, and growing by
-  // copies cost a first step 200-400 ms of page faults and copying on a machine where faults
-  // are dear (docs/BENCHMARKS.md).
-  tColumn.reserve(2 * K.column.size());
-  tBlock.reserve(2 * K.column.size());
+  BlockRows T;
+  T.begin.reserve(size_t(numNodes) + 1);
+  // Reserved, not touched: pages never written cost nothing, and growing by copies cost a
+  // first step 200-400 ms of page faults and copying where faults are dear (docs/memory.md).
+  T.column.reserve(2 * K.column.size());
+  T.block.reserve(2 * K.column.size());
   for (uint32_t n = 0; n < numNodes; ++n) {
-    for (uint32_t k = K.begin[n]; k < K.begin[n + 1]; ++k)
+    for (uint32_t k = K.begin[n]; k < K.begin[n + 1]; ++k) {
+      const double weight = k == K.begin[n] ? 0.5 : 1.0;
       for (RowSparseMatrix::InnerIterator it(rowsOfA, K.column[k]); it; ++it)
-        sum.add(uint32_t(it.col()), it.value() * K.block[k]);
-    sum.drain([&](uint32_t j, const Eigen::Matrix3d& block) {
-      tColumn.push_back(j);
-      tBlock.push_back(block);
-    });
-    tBegin[n + 1] = tColumn.size();
+        sum.add(uint32_t(it.col()), (weight * it.value()) * K.block[k]);
+    }
+    T.endRow(sum);
   }
 
-  // S = A^T T: control row i gathers A_ni T_n over the nodes n of A's column i. S is symmetric,
-  // so row i's blocks, transposed, are column i's: column 3i + c holds S_ij(c, r) at row 3j + r.
-  SparseMatrix S(3 * numControl, 3 * numControl);
-  S.reserve(Eigen::Index(tColumn.size()) * 9);  // a guess; the matrix grows as needed
-  std::vector<std::pair<uint32_t, Eigen::Matrix3d>> rowBlocks;
-  for (Eigen::Index i = 0; i < numControl; ++i) {
+  // W = A^T T: control row i gathers A_ni T_n over the nodes n of A's column i.
+  BlockRows W;
+  W.begin.reserve(size_t(numControl) + 1);
+  for (uint32_t i = 0; i < numControl; ++i) {
     for (SparseMatrix::InnerIterator it(A, i); it; ++it) {
       const size_t n = size_t(it.row());
-      for (size_t k = tBegin[n]; k < tBegin[n + 1]; ++k)
-        sum.add(tColumn[k], it.value() * tBlock[k]);
+      for (size_t k = T.begin[n]; k < T.begin[n + 1]; ++k)
+        sum.add(T.column[k], it.value() * T.block[k]);
     }
+    W.endRow(sum);
+  }
+  T = {};
+
+  // W's columns: for control point j, the places k of the blocks W_ij (i increasing).
+  std::vector<size_t> columnBegin(size_t(numControl) + 1, 0);
+  for (uint32_t j : W.column) ++columnBegin[j + 1];
+  for (uint32_t j = 0; j < numControl; ++j) columnBegin[j + 1] += columnBegin[j];
+  std::vector<size_t> inColumn(W.column.size());
+  std::vector<uint32_t> rowOf(W.column.size());
+  {
+    std::vector<size_t> next(columnBegin.begin(), columnBegin.end() - 1);
+    for (uint32_t i = 0; i < numControl; ++i)
+      for (size_t k = W.begin[i]; k < W.begin[i + 1]; ++k) {
+        const size_t place = next[W.column[k]]++;
+        inColumn[place] = k;
+        rowOf[place] = i;
+      }
+  }
+
+  // S = W + W^T, row i: W_ij and W_ji^T. S is symmetric, so row i's blocks, transposed, are
+  // column i's: column 3i + c holds S_ij(c, r) at row 3j + r.
+  SparseMatrix S(3 * Eigen::Index(numControl), 3 * Eigen::Index(numControl));
+  S.reserve(Eigen::Index(2 * W.column.size()) * 9);  // a guess; the matrix grows as needed
+  std::vector<std::pair<uint32_t, Eigen::Matrix3d>> rowBlocks;
+  for (uint32_t i = 0; i < numControl; ++i) {
+    for (size_t k = W.begin[i]; k < W.begin[i + 1]; ++k) sum.add(W.column[k], W.block[k]);
+    for (size_t p = columnBegin[i]; p < columnBegin[i + 1]; ++p)
+      sum.add(rowOf[p], W.block[inColumn[p]].transpose());
     sum.sortTouched();
     rowBlocks.clear();
     sum.drain([&](uint32_t j, const Eigen::Matrix3d& block) { rowBlocks.emplace_back(j, block); });
     for (int c = 0; c < 3; ++c) {
-      S.startVec(3 * i + c);
+      S.startVec(3 * Eigen::Index(i) + c);
       for (const auto& [j, block] : rowBlocks)
-        for (int r = 0; r < 3; ++r) S.insertBack(3 * Eigen::Index(j) + r, 3 * i + c) = block(c, r);
+        for (int r = 0; r < 3; ++r)
+          S.insertBack(3 * Eigen::Index(j) + r, 3 * Eigen::Index(i) + c) = block(c, r);
     }
   }
   S.finalize();

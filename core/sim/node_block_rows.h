@@ -26,21 +26,19 @@ struct NodeBlockRows {
   uint32_t numNodes() const { return uint32_t(begin.size() - 1); }
 };
 
-/// A node matrix being assembled from symmetric element matrices, zero at first: each node's
-/// row holds, in increasing order, every node it shares an element with; diagonal[n] is n's
-/// place in its own row. The elements add only the blocks on and above the diagonal
-/// (addUpperBlocks), half of them; mirrorUpperBlocks then writes the others, their transposes.
+/// A symmetric node matrix being assembled from symmetric element matrices, zero at first, of
+/// which only the blocks on and above the diagonal are kept: row n holds, in increasing order,
+/// n itself and every node m > n it shares an element with (reduceSymmetricNodeBlocks needs no
+/// others, and they would double the memory, whose first touch is dear: docs/memory.md).
 struct SymmetricNodeBlocks {
   NodeBlockRows K;
-  std::vector<uint32_t> diagonal;
   NodeSlots around;  ///< the elements around each node, which the pattern was made from
 };
 
-/// where[m] = the place of node m in n's row, for every m >= n in it: where the blocks on and
-/// above the diagonal of n's row go.
+/// where[m] = the place of node m in n's row, for every m in it.
 inline void placeUpperRow(const SymmetricNodeBlocks& nodes, uint32_t n,
                           std::vector<uint32_t>& where) {
-  for (uint32_t k = nodes.diagonal[n]; k < nodes.K.begin[n + 1]; ++k) where[nodes.K.column[k]] = k;
+  for (uint32_t k = nodes.K.begin[n]; k < nodes.K.begin[n + 1]; ++k) where[nodes.K.column[k]] = k;
 }
 
 /// The pattern of elements whose nodes are nodesOf(e), e < numElements.
@@ -51,20 +49,17 @@ SymmetricNodeBlocks symmetricNodePattern(uint32_t numNodes, uint32_t numElements
   result.around = nodeSlots(numNodes, numElements, nodesOf);
   const NodeSlots& around = result.around;
   NodeBlockRows& K = result.K;
-  result.diagonal.resize(numNodes);
   K.begin.reserve(size_t(numNodes) + 1);
   std::vector<uint32_t> seenBy(numNodes, ~0u);
   for (uint32_t n = 0; n < numNodes; ++n) {
     const size_t rowBegin = K.column.size();
     for (uint32_t k = around.begin[n]; k < around.begin[n + 1]; ++k)
       for (uint32_t m : nodesOf(around.slots[k].first))
-        if (seenBy[m] != n) {
+        if (m >= n && seenBy[m] != n) {
           seenBy[m] = n;
           K.column.push_back(m);
         }
-    const auto row = K.column.begin() + std::ptrdiff_t(rowBegin);
-    std::sort(row, K.column.end());
-    result.diagonal[n] = uint32_t(std::lower_bound(row, K.column.end(), n) - K.column.begin());
+    std::sort(K.column.begin() + std::ptrdiff_t(rowBegin), K.column.end());
     K.begin.push_back(uint32_t(K.column.size()));
   }
   K.block.assign(K.column.size(), Eigen::Matrix3d::Zero());
@@ -98,11 +93,9 @@ void addUpperBlocks(SymmetricNodeBlocks& nodes, std::span<const uint32_t> ids,
   }
 }
 
-/// The blocks below the diagonal, block (m, n) being block (n, m) transposed; returns K.
-NodeBlockRows& mirrorUpperBlocks(SymmetricNodeBlocks& nodes);
-
-/// S = (A x I3)^T K (A x I3), 3N by 3N (control point i, coordinate c at row 3i + c).
-SparseMatrix reduceNodeBlocks(const NodeBlockRows& K, const SparseMatrix& A);
+/// S = (A x I3)^T K (A x I3), 3N by 3N (control point i, coordinate c at row 3i + c), for the
+/// symmetric K whose blocks on and above the diagonal `nodes` holds.
+SparseMatrix reduceSymmetricNodeBlocks(const SymmetricNodeBlocks& nodes, const SparseMatrix& A);
 
 /// A trilinear or pyramid element's rest stiffness from its own Gauss points: 24 x 24, node a's
 /// coordinate c at row 3a + c.

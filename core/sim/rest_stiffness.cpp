@@ -161,7 +161,7 @@ SparseMatrix reducedRestStiffness(const FemMesh& mesh, std::span<const LameParam
                    [&](int a, int b) -> Block { return Ke.block<3, 3>(3 * a, 3 * b); }, where);
   }
   if (stop && *stop) return {};
-  return reduceNodeBlocks(mirrorUpperBlocks(nodes), A);
+  return reduceSymmetricNodeBlocks(nodes, A);
 }
 
 }  // namespace sculpt
