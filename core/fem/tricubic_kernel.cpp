@@ -89,6 +89,56 @@ bool axisAlignedRows(const Eigen::Matrix3d& inverseJacobian, int8_t rows[3]) {
 
 namespace {
 
+// The transposed stages C, B and A: from H = S Jinv^T at the Gauss points ([ij][c][k]) back to
+// the 64 nodes, out[c*64 + a*16 + b*4 + g].
+using GaussRows = double[16][3][4];
+[[gnu::always_inline]] SCULPT_KERNEL_TARGET inline void gaussToNodes(const GaussRows& HU,
+                                                                     const GaussRows& HV,
+                                                                     const GaussRows& HW,
+                                                                     double* out) {
+  const Tables& T = tables();
+  // Transposed stage C: back to g, with g in the vector lanes (no horizontal sums).
+  alignas(32) double RBB[16][12], RBD[16][12], RDB[16][12];
+  V4 Brow[4], Drow[4];  // [k] over g
+  for (int k = 0; k < 4; ++k) {
+    Brow[k] = V4(T.B[k][0], T.B[k][1], T.B[k][2], T.B[k][3]);
+    Drow[k] = V4(T.D[k][0], T.D[k][1], T.D[k][2], T.D[k][3]);
+  }
+  for (int ij = 0; ij < 16; ++ij)
+    for (int c = 0; c < 3; ++c) {
+      V4 db = HU[ij][c][0] * Brow[0], bd = HV[ij][c][0] * Brow[0], bb = HW[ij][c][0] * Drow[0];
+      for (int k = 1; k < 4; ++k) {
+        db += HU[ij][c][k] * Brow[k];
+        bd += HV[ij][c][k] * Brow[k];
+        bb += HW[ij][c][k] * Drow[k];
+      }
+      store(RDB[ij] + c * 4, db);
+      store(RBD[ij] + c * 4, bd);
+      store(RBB[ij] + c * 4, bb);
+    }
+  // Transposed stage B: back to b. QB[i][c*16 + b*4 + g].
+  alignas(32) double QB[4][48], QD[4][48];
+  for (int i = 0; i < 4; ++i)
+    for (int c = 0; c < 3; ++c)
+      for (int b = 0; b < 4; ++b) {
+        V4 qb = V4::Zero(), qd = V4::Zero();
+        for (int j = 0; j < 4; ++j) {
+          const double wb = T.B[j][b], wd = T.D[j][b];
+          qb += wb * load(RBB[i * 4 + j] + c * 4) + wd * load(RBD[i * 4 + j] + c * 4);
+          qd += wb * load(RDB[i * 4 + j] + c * 4);
+        }
+        store(QB[i] + c * 16 + b * 4, qb);
+        store(QD[i] + c * 16 + b * 4, qd);
+      }
+  // Transposed stage A: back to a.
+  for (int a = 0; a < 4; ++a)
+    for (int n = 0; n < 48; n += 4) {
+      V4 sum = T.B[0][a] * load(QB[0] + n) + T.D[0][a] * load(QD[0] + n);
+      for (int i = 1; i < 4; ++i) sum += T.B[i][a] * load(QB[i] + n) + T.D[i][a] * load(QD[i] + n);
+      store(out + (n / 16) * 64 + a * 16 + n % 16, sum);
+    }
+}
+
 // The kernel for a general inverse Jacobian (kAxisAligned false) or for one with a single
 // nonzero per column (element.axisRows): M = G Jinv and H = S Jinv^T are then one product per
 // entry instead of three.
@@ -239,44 +289,8 @@ SCULPT_KERNEL_TARGET double tricubicKernel(const double* u, const TricubicPacked
   const double energy = energyLanes.sum();
   if (!gradient) return energy;
 
-  // Transposed stage C: back to g, with g in the vector lanes (no horizontal sums).
-  V4 Brow[4], Drow[4];  // [k] over g
-  for (int k = 0; k < 4; ++k) {
-    Brow[k] = V4(T.B[k][0], T.B[k][1], T.B[k][2], T.B[k][3]);
-    Drow[k] = V4(T.D[k][0], T.D[k][1], T.D[k][2], T.D[k][3]);
-  }
-  for (int ij = 0; ij < 16; ++ij)
-    for (int c = 0; c < 3; ++c) {
-      V4 db = HU[ij][c][0] * Brow[0], bd = HV[ij][c][0] * Brow[0], bb = HW[ij][c][0] * Drow[0];
-      for (int k = 1; k < 4; ++k) {
-        db += HU[ij][c][k] * Brow[k];
-        bd += HV[ij][c][k] * Brow[k];
-        bb += HW[ij][c][k] * Drow[k];
-      }
-      store(RDB[ij] + c * 4, db);
-      store(RBD[ij] + c * 4, bd);
-      store(RBB[ij] + c * 4, bb);
-    }
-  // Transposed stage B: back to b. QB[i][c*16 + b*4 + g].
-  for (int i = 0; i < 4; ++i)
-    for (int c = 0; c < 3; ++c)
-      for (int b = 0; b < 4; ++b) {
-        V4 qb = V4::Zero(), qd = V4::Zero();
-        for (int j = 0; j < 4; ++j) {
-          const double wb = T.B[j][b], wd = T.D[j][b];
-          qb += wb * load(RBB[i * 4 + j] + c * 4) + wd * load(RBD[i * 4 + j] + c * 4);
-          qd += wb * load(RDB[i * 4 + j] + c * 4);
-        }
-        store(QB[i] + c * 16 + b * 4, qb);
-        store(QD[i] + c * 16 + b * 4, qd);
-      }
-  // Transposed stage A: back to a, in the element frame: ul[c][a*16 + b*4 + g].
-  for (int a = 0; a < 4; ++a)
-    for (int n = 0; n < 48; n += 4) {
-      V4 sum = T.B[0][a] * load(QB[0] + n) + T.D[0][a] * load(QD[0] + n);
-      for (int i = 1; i < 4; ++i) sum += T.B[i][a] * load(QB[i] + n) + T.D[i][a] * load(QD[i] + n);
-      store(ul + (n / 16) * 64 + a * 16 + n % 16, sum);
-    }
+  // Back to the nodes, in the element frame: ul[c][a*16 + b*4 + g].
+  gaussToNodes(HU, HV, HW, ul);
   // Rotated back to the world frame.
   for (int c = 0; c < 3; ++c)
     for (int n = 0; n < 64; n += 4)
@@ -285,7 +299,59 @@ SCULPT_KERNEL_TARGET double tricubicKernel(const double* u, const TricubicPacked
   return energy;
 }
 
+// The Hessian product with the unit vector of coordinate c of every node, at rotation I. Its
+// displacement gradient at Gauss point (i, j, k) is e_c g^T, g the physical gradient of the
+// node's basis function B_a1(xi) B_a2(eta) B_a3(zeta): a product of 1D values instead of the
+// forward contractions, and the three coordinates share it.
+SCULPT_KERNEL_TARGET void restStiffnessColumns(const TricubicPacked& element, double* K) {
+  const Tables& T = tables();
+  V4 BT[4], DT[4];  // [g] over the four Gauss points k
+  for (int g = 0; g < 4; ++g) {
+    BT[g] = V4(T.BT[g][0], T.BT[g][1], T.BT[g][2], T.BT[g][3]);
+    DT[g] = V4(T.DT[g][0], T.DT[g][1], T.DT[g][2], T.DT[g][3]);
+  }
+  alignas(32) double H[3][3][16][3][4];  // [c][U, V or W][ij][row][k]
+  for (int a = 0; a < 64; ++a) {
+    const int a1 = a / 16, a2 = a / 4 % 4, a3 = a % 4;
+    for (int ij = 0; ij < 16; ++ij) {
+      const int i = ij / 4, j = ij % 4;
+      // d B_a / d xi_m over the four Gauss points k.
+      const V4 dN[3] = {(T.D[i][a1] * T.B[j][a2]) * BT[a3], (T.B[i][a1] * T.D[j][a2]) * BT[a3],
+                        (T.B[i][a1] * T.B[j][a2]) * DT[a3]};
+      V4 J[3][3];
+      for (int m = 0; m < 3; ++m)
+        for (int col = 0; col < 3; ++col)
+          J[m][col] =
+              load(element.inverseJacobian + ij * element.jacobianStride + (m * 3 + col) * 4);
+      V4 g[3];
+      for (int col = 0; col < 3; ++col)
+        g[col] = dN[0] * J[0][col] + dN[1] * J[1][col] + dN[2] * J[2][col];
+      const V4 vl = load(element.volumeLambda + ij * 4);
+      const V4 vm = load(element.volumeMu + ij * 4);
+      for (int c = 0; c < 3; ++c) {
+        // S = 2 mu sym(e_c g^T) + lambda g_c I, times the Gauss volume.
+        V4 S[3][3];
+        for (int r = 0; r < 3; ++r)
+          for (int t = 0; t < 3; ++t) {
+            S[r][t] = V4::Zero();
+            if (r == c) S[r][t] += vm * g[t];
+            if (t == c) S[r][t] += vm * g[r];
+            if (r == t) S[r][t] += vl * g[c];
+          }
+        for (int r = 0; r < 3; ++r)
+          for (int m = 0; m < 3; ++m)  // H = S Jinv^T
+            store(H[c][m][ij][r], S[r][0] * J[m][0] + S[r][1] * J[m][1] + S[r][2] * J[m][2]);
+      }
+    }
+    for (int c = 0; c < 3; ++c) gaussToNodes(H[c][0], H[c][1], H[c][2], K + (c * 64 + a) * 192);
+  }
+}
+
 }  // namespace
+
+void tricubicRestStiffness(const TricubicPacked& element, double* K) {
+  restStiffnessColumns(element, K);
+}
 
 double tricubicElementKernel(const double* u, const TricubicPacked& element,
                              const Eigen::Matrix3d& R, bool withRestTerm, bool withEnergy,

@@ -17,8 +17,8 @@ namespace {
 
 using Block = Eigen::Matrix3d;
 
-// A tricubic element's rest stiffness, as the kernel computes it: its Hessian products with the
-// unit vectors at rotation I. An affine element of uniform material is lambda K_lambda + mu K_mu,
+// A tricubic element's rest stiffness, as the kernel computes it (its Hessian products with the
+// unit vectors at rotation I: tricubicRestStiffness). An affine element of uniform material is lambda K_lambda + mu K_mu,
 // with the two parts shared by every element of the same inverse Jacobian and volume (all the
 // cells of a block, most of a cage's), kept as 64 x 64 blocks (a * 64 + b).
 class TricubicStiffness {
@@ -44,7 +44,7 @@ class TricubicStiffness {
     for (int q = 1; q < kTricubicGaussPoints && uniform; ++q)
       uniform = lame[q].lambda == lame[0].lambda && lame[q].mu == lame[0].mu;
     if (!affine || !uniform) {
-      probe(J, affine, volume, lame, own_);
+      stiffness(J, affine, volume, lame, own_);
       return {&own_};
     }
     // Elements of one shape agree to rounding only (their Jacobians come from their own
@@ -61,10 +61,10 @@ class TricubicStiffness {
       Parts parts;
       std::vector<LameParameters> unit(kTricubicGaussPoints);
       for (LameParameters& p : unit) p = {1.0, 0.0};
-      probe(J, true, volume, unit.data(), own_);
+      stiffness(J, true, volume, unit.data(), own_);
       parts.lambda = blocksOf(own_);
       for (LameParameters& p : unit) p = {0.0, 1.0};
-      probe(J, true, volume, unit.data(), own_);
+      stiffness(J, true, volume, unit.data(), own_);
       parts.mu = blocksOf(own_);
       found = shared_.emplace(key, std::move(parts)).first;
     }
@@ -95,18 +95,12 @@ class TricubicStiffness {
     const double mantissa = std::frexp(value, &exponent);
     return std::ldexp(std::round(std::ldexp(mantissa, 30)), exponent - 30);
   }
-  static void probe(const Eigen::Matrix3d* J, bool affine, const double* volume,
-                    const LameParameters* lame, Eigen::MatrixXd& K) {
+  static void stiffness(const Eigen::Matrix3d* J, bool affine, const double* volume,
+                        const LameParameters* lame, Eigen::MatrixXd& K) {
     std::vector<double> block(size_t(tricubicRestSize(affine)));
     packTricubicInverseJacobians(J, affine, block.data());
     packTricubicMaterial(volume, lame, affine, block.data());
-    const TricubicPacked view = tricubicPackedView(block.data(), affine, block.data(), 0);
-    double u[192] = {};
-    for (int j = 0; j < 192; ++j) {
-      u[j] = 1.0;
-      tricubicElementKernel(u, view, Eigen::Matrix3d::Identity(), false, false, K.col(j).data());
-      u[j] = 0.0;
-    }
+    tricubicRestStiffness(tricubicPackedView(block.data(), affine, block.data(), 0), K.data());
   }
 
   const FemMesh& mesh_;
