@@ -372,7 +372,7 @@ void SystemPreconditioner::upgradeToRestStiffness(const FemModel& model,
   const double* scales = factor_->scales;
   Request request = requestFor(model, scales[0], scales[1], scales[2], freeDofs);
   request.restStiffness = true;
-  // Making it costs about 0.12 ms of a core per element (the bunny's 2,968: 0.35 s). A
+  // Making it costs about 0.07 ms of a core per element (the bunny's 2,968: 0.2 s). A
   // reproducible run takes it at the same turn as any worker factor, waiting if it is late:
   // steps drawn one by one (sculpt --bench) find it ready; a tight loop on two cores (sculpt-cli)
   // gains nothing by stepping beside it, as the worker and the steps share the cores.
