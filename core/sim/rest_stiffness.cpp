@@ -18,9 +18,10 @@ namespace {
 using Block = Eigen::Matrix3d;
 
 // A tricubic element's rest stiffness, as the kernel computes it (its Hessian products with the
-// unit vectors at rotation I: tricubicRestStiffness). An affine element of uniform material is lambda K_lambda + mu K_mu,
-// with the two parts shared by every element of the same inverse Jacobian and volume (all the
-// cells of a block, most of a cage's), kept as 64 x 64 blocks (a * 64 + b).
+// unit vectors at rotation I: tricubicRestStiffness). An affine element of uniform material is
+// lambda K_lambda + mu K_mu, with the two parts shared by every element of the same inverse
+// Jacobian and volume (all the cells of a block, most of a cage's), kept as 64 x 64 blocks
+// (a * 64 + b).
 class TricubicStiffness {
  public:
   // Either an element's own matrix (192 x 192, coordinate c of node a at row c * 64 + a) or a
