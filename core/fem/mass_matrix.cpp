@@ -89,6 +89,30 @@ struct Columns {
   std::vector<double> values;
 };
 
+// Columns made in contiguous chunks, one per worker, and kept as made: part k holds columns
+// [first[k], first[k + 1]). Merging the parts into one copy doubled a node matrix's memory
+// (block10 at K = 1: 38 MB more, touched for the first time: docs/memory.md).
+struct ColumnChunks {
+  std::vector<Columns> parts;
+  std::vector<uint32_t> first{0};
+
+  uint32_t numColumns() const { return first.back(); }
+  size_t numEntries() const {
+    size_t entries = 0;
+    for (const Columns& part : parts) entries += part.rows.size();
+    return entries;
+  }
+  // f(row, value) for the entries of column j.
+  template <class F>
+  void forColumn(uint32_t j, const F& f) const {
+    const size_t k = size_t(std::upper_bound(first.begin(), first.end(), j) - first.begin()) - 1;
+    const Columns& part = parts[k];
+    const size_t local = j - first[k];
+    for (int64_t e = part.begin[local]; e < part.begin[local + 1]; ++e)
+      f(uint32_t(part.rows[size_t(e)]), part.values[size_t(e)]);
+  }
+};
+
 using Accumulator = DenseAccumulator<double>;
 
 // Appends the accumulated column to `out` (rows sorted when asked, exact zeros kept when asked).
@@ -102,12 +126,14 @@ void flush(Accumulator& column, Columns& out, bool sorted, bool keepZeros) {
   out.begin.push_back(int64_t(out.rows.size()));
 }
 
-// Columns [0, n) computed in parallel chunks by column(j, accumulator), flushed in order.
+// Columns [0, n) computed in parallel chunks by column(j, accumulator).
 template <class ColumnBody>
-Columns columnsInParallel(uint32_t n, size_t rows, bool sorted, bool keepZeros,
-                          const ColumnBody& column) {
+ColumnChunks columnsInParallel(uint32_t n, size_t rows, bool sorted, bool keepZeros,
+                               const ColumnBody& column) {
   std::vector<Columns> parts(workerCount());
+  std::vector<uint32_t> chunkBegin(workerCount(), n);
   parallelChunks(n, 64, [&](uint32_t begin, uint32_t end, unsigned worker) {
+    chunkBegin[worker] = begin;
     Accumulator accumulator(rows, 0.0);
     Columns& part = parts[worker];
     for (uint32_t j = begin; j < end; ++j) {
@@ -115,26 +141,25 @@ Columns columnsInParallel(uint32_t n, size_t rows, bool sorted, bool keepZeros,
       flush(accumulator, part, sorted, keepZeros);
     }
   });
-  Columns all;
-  size_t entries = 0;
-  for (const Columns& part : parts) entries += part.rows.size();
-  all.begin.reserve(size_t(n) + 1);
-  all.rows.reserve(entries);
-  all.values.reserve(entries);
-  for (const Columns& part : parts) {
-    const int64_t offset = int64_t(all.rows.size());
-    for (size_t k = 1; k < part.begin.size(); ++k) all.begin.push_back(offset + part.begin[k]);
-    all.rows.insert(all.rows.end(), part.rows.begin(), part.rows.end());
-    all.values.insert(all.values.end(), part.values.begin(), part.values.end());
+  // The chunks in column order (a worker without a chunk has none: it starts at n).
+  std::vector<unsigned> order(parts.size());
+  for (unsigned k = 0; k < order.size(); ++k) order[k] = k;
+  std::stable_sort(order.begin(), order.end(),
+                   [&](unsigned a, unsigned b) { return chunkBegin[a] < chunkBegin[b]; });
+  ColumnChunks chunks;
+  for (unsigned k : order) {
+    if (parts[k].begin.size() == 1) continue;  // no columns
+    chunks.first.push_back(chunkBegin[k] + uint32_t(parts[k].begin.size() - 1));
+    chunks.parts.push_back(std::move(parts[k]));
   }
-  return all;
+  return chunks;
 }
 
 // The node matrix of the Gauss-point weights `weights` (a field times the Gauss volume) over the
 // elements marked in `included` (all when empty), each node's column gathered from the elements
 // around the node: a dense accumulator per column instead of a search for every element entry in
 // the pattern.
-Columns nodeMatrixColumns(const FemMesh& mesh, std::span<const double> weights,
+ColumnChunks nodeMatrixColumns(const FemMesh& mesh, std::span<const double> weights,
                           std::span<const uint8_t> included, bool sorted) {
   const TricubicMassColumns tricubic;
   const Eigen::MatrixXd hexN = linearShapeTable(false);
@@ -171,14 +196,18 @@ Columns nodeMatrixColumns(const FemMesh& mesh, std::span<const double> weights,
   return columnsInParallel(numNodes, numNodes, sorted, true, nodeColumn);
 }
 
-SparseMatrix toSparse(const Columns& columns, Eigen::Index rows) {
-  const Eigen::Index cols = Eigen::Index(columns.begin.size()) - 1;
-  SparseMatrix matrix(rows, cols);
-  matrix.resizeNonZeros(Eigen::Index(columns.rows.size()));
-  for (Eigen::Index j = 0; j <= cols; ++j)
-    matrix.outerIndexPtr()[j] = int(columns.begin[size_t(j)]);
-  std::copy(columns.rows.begin(), columns.rows.end(), matrix.innerIndexPtr());
-  std::copy(columns.values.begin(), columns.values.end(), matrix.valuePtr());
+SparseMatrix toSparse(const ColumnChunks& columns, Eigen::Index rows) {
+  SparseMatrix matrix(rows, Eigen::Index(columns.numColumns()));
+  matrix.resizeNonZeros(Eigen::Index(columns.numEntries()));
+  Eigen::Index j = 0, entries = 0;
+  for (const Columns& part : columns.parts) {
+    for (size_t k = 0; k + 1 < part.begin.size(); ++k)
+      matrix.outerIndexPtr()[j++] = int(entries + part.begin[k]);
+    std::copy(part.rows.begin(), part.rows.end(), matrix.innerIndexPtr() + entries);
+    std::copy(part.values.begin(), part.values.end(), matrix.valuePtr() + entries);
+    entries += Eigen::Index(part.rows.size());
+  }
+  matrix.outerIndexPtr()[j] = int(entries);
   return matrix;
 }
 
@@ -207,16 +236,17 @@ SparseMatrix reducedWeightedMatrix(const FemMesh& mesh, const SparseMatrix& A,
   // Column c of A^T M A is A^T (M a_c), a_c column c of A: M's columns for the nodes of a_c
   // summed into one dense accumulator over the nodes, then those nodes' rows of A into one over
   // the control points. M's columns need no order.
-  const Columns M = nodeMatrixColumns(mesh, weights, included, false);
+  const ColumnChunks M = nodeMatrixColumns(mesh, weights, included, false);
   const SparseMatrix At = A.transpose();  // column n: the control points of node n's row of A
   const uint32_t numControl = uint32_t(A.cols());
   std::vector<Accumulator> nodeSums(workerCount(), Accumulator(size_t(A.rows()), 0.0));
-  const Columns reduced = columnsInParallel(
+  const ColumnChunks reduced = columnsInParallel(
       numControl, numControl, true, false, [&](uint32_t c, Accumulator& sum, unsigned worker) {
         Accumulator& nodes = nodeSums[worker];
         for (SparseMatrix::InnerIterator a(A, Eigen::Index(c)); a; ++a)
-          for (int64_t k = M.begin[size_t(a.row())]; k < M.begin[size_t(a.row()) + 1]; ++k)
-            nodes.add(uint32_t(M.rows[size_t(k)]), a.value() * M.values[size_t(k)]);
+          M.forColumn(uint32_t(a.row()), [&, weight = a.value()](uint32_t node, double value) {
+            nodes.add(node, weight * value);
+          });
         nodes.drain([&](uint32_t node, double value) {
           for (SparseMatrix::InnerIterator r(At, Eigen::Index(node)); r; ++r)
             sum.add(uint32_t(r.row()), r.value() * value);
