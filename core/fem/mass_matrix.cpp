@@ -160,7 +160,7 @@ ColumnChunks columnsInParallel(uint32_t n, size_t rows, bool sorted, bool keepZe
 // around the node: a dense accumulator per column instead of a search for every element entry in
 // the pattern.
 ColumnChunks nodeMatrixColumns(const FemMesh& mesh, std::span<const double> weights,
-                          std::span<const uint8_t> included, bool sorted) {
+                               std::span<const uint8_t> included, bool sorted) {
   const TricubicMassColumns tricubic;
   const Eigen::MatrixXd hexN = linearShapeTable(false);
   const Eigen::MatrixXd pyramidN = linearShapeTable(true);
