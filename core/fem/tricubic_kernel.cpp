@@ -299,10 +299,10 @@ SCULPT_KERNEL_TARGET double tricubicKernel(const double* u, const TricubicPacked
   return energy;
 }
 
-// The Hessian product with the unit vector of coordinate c of every node, at rotation I. Its
-// displacement gradient at Gauss point (i, j, k) is e_c g^T, g the physical gradient of the
-// node's basis function B_a1(xi) B_a2(eta) B_a3(zeta): a product of 1D values instead of the
-// forward contractions, and the three coordinates share it.
+// The Hessian products at rotation I with the unit vector of each node a and coordinate c, into
+// column c*64 + a of K. That vector's displacement gradient at Gauss point (i, j, k) is e_c g^T,
+// g the physical gradient of the node's basis function B_a1(xi) B_a2(eta) B_a3(zeta): a product
+// of 1D values instead of the forward contractions, which the three coordinates share.
 SCULPT_KERNEL_TARGET void restStiffnessColumns(const TricubicPacked& element, double* K) {
   const Tables& T = tables();
   V4 BT[4], DT[4];  // [g] over the four Gauss points k
