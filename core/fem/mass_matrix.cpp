@@ -126,14 +126,13 @@ void flush(Accumulator& column, Columns& out, bool sorted, bool keepZeros) {
   out.begin.push_back(int64_t(out.rows.size()));
 }
 
-// Columns [0, n) computed in parallel chunks by column(j, accumulator).
+// Columns [0, n) computed in parallel chunks by column(j, accumulator). Chunk k is worker k's
+// and the chunks follow each other in k (parallel_for.h), so the parts are in column order.
 template <class ColumnBody>
 ColumnChunks columnsInParallel(uint32_t n, size_t rows, bool sorted, bool keepZeros,
                                const ColumnBody& column) {
   std::vector<Columns> parts(workerCount());
-  std::vector<uint32_t> chunkBegin(workerCount(), n);
   parallelChunks(n, 64, [&](uint32_t begin, uint32_t end, unsigned worker) {
-    chunkBegin[worker] = begin;
     Accumulator accumulator(rows, 0.0);
     Columns& part = parts[worker];
     for (uint32_t j = begin; j < end; ++j) {
@@ -141,16 +140,11 @@ ColumnChunks columnsInParallel(uint32_t n, size_t rows, bool sorted, bool keepZe
       flush(accumulator, part, sorted, keepZeros);
     }
   });
-  // The chunks in column order (a worker without a chunk has none: it starts at n).
-  std::vector<unsigned> order(parts.size());
-  for (unsigned k = 0; k < order.size(); ++k) order[k] = k;
-  std::stable_sort(order.begin(), order.end(),
-                   [&](unsigned a, unsigned b) { return chunkBegin[a] < chunkBegin[b]; });
   ColumnChunks chunks;
-  for (unsigned k : order) {
-    if (parts[k].begin.size() == 1) continue;  // no columns
-    chunks.first.push_back(chunkBegin[k] + uint32_t(parts[k].begin.size() - 1));
-    chunks.parts.push_back(std::move(parts[k]));
+  for (Columns& part : parts) {
+    if (part.begin.size() == 1) continue;  // a worker without a chunk
+    chunks.first.push_back(chunks.first.back() + uint32_t(part.begin.size() - 1));
+    chunks.parts.push_back(std::move(part));
   }
   return chunks;
 }

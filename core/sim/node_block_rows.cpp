@@ -8,22 +8,14 @@ namespace sculpt {
 
 namespace {
 
-// A block-sparse matrix row by row: row r holds block[k] at column[k], k in [begin[r],
-// begin[r + 1]).
-struct BlockRows {
-  std::vector<size_t> begin{0};
-  std::vector<uint32_t> column;
-  std::vector<Eigen::Matrix3d> block;
-
-  // Ends the current row with the accumulator's sums.
-  void endRow(DenseAccumulator<Eigen::Matrix3d>& sum) {
-    sum.drain([&](uint32_t j, const Eigen::Matrix3d& b) {
-      column.push_back(j);
-      block.push_back(b);
-    });
-    begin.push_back(column.size());
-  }
-};
+// Ends the current row of `rows` with the accumulator's sums.
+void endRow(NodeBlockRows& rows, DenseAccumulator<Eigen::Matrix3d>& sum) {
+  sum.drain([&](uint32_t j, const Eigen::Matrix3d& block) {
+    rows.column.push_back(j);
+    rows.block.push_back(block);
+  });
+  rows.begin.push_back(uint32_t(rows.column.size()));
+}
 
 }  // namespace
 
@@ -41,7 +33,7 @@ SparseMatrix reduceSymmetricNodeBlocks(const SymmetricNodeBlocks& nodes, const S
   // T = V A: per node n, the blocks T_nj = sum_m V_nm A_mj (row n of K starts with n itself).
   using RowSparseMatrix = Eigen::SparseMatrix<double, Eigen::RowMajor>;
   const RowSparseMatrix rowsOfA = A;
-  BlockRows T;
+  NodeBlockRows T;
   T.begin.reserve(size_t(numNodes) + 1);
   // T had 1.8-1.9x V's blocks for the stand-in (the bunny, block10 and block12 at K = 1) and
   // 0.7x for the elements' own stiffness (the bunny). Reserved, not touched: pages never written
@@ -55,11 +47,11 @@ SparseMatrix reduceSymmetricNodeBlocks(const SymmetricNodeBlocks& nodes, const S
       for (RowSparseMatrix::InnerIterator it(rowsOfA, K.column[k]); it; ++it)
         sum.add(uint32_t(it.col()), (weight * it.value()) * K.block[k]);
     }
-    T.endRow(sum);
+    endRow(T, sum);
   }
 
   // W = A^T T: control row i gathers A_ni T_n over the nodes n of A's column i.
-  BlockRows W;
+  NodeBlockRows W;
   W.begin.reserve(size_t(numControl) + 1);
   for (uint32_t i = 0; i < numControl; ++i) {
     for (SparseMatrix::InnerIterator it(A, i); it; ++it) {
@@ -67,7 +59,7 @@ SparseMatrix reduceSymmetricNodeBlocks(const SymmetricNodeBlocks& nodes, const S
       for (size_t k = T.begin[n]; k < T.begin[n + 1]; ++k)
         sum.add(T.column[k], it.value() * T.block[k]);
     }
-    W.endRow(sum);
+    endRow(W, sum);
   }
   T = {};
 

@@ -17,8 +17,8 @@
 
 namespace sculpt {
 
-/// A symmetric node matrix as 3x3 blocks: row n couples node n's coordinates with node
-/// column[k]'s through block[k], for k in [begin[n], begin[n + 1]).
+/// A matrix of 3x3 blocks row by row (a node matrix, or the reduction's products): row n couples
+/// its point's coordinates with point column[k]'s through block[k], k in [begin[n], begin[n + 1]).
 struct NodeBlockRows {
   std::vector<uint32_t> begin{0};
   std::vector<uint32_t> column;
