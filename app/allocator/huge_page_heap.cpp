@@ -11,10 +11,12 @@ namespace {
 
 // glibc 2.35+: madvise huge pages for the heap and mmapped blocks; blocks below 256 MB from the
 // heap (reused, not mapped afresh each time); the heap's top kept up to 1 GB instead of trimmed;
-// the heap grown 64 MB at a time. Older glibc ignores tunables it does not know.
+// the heap grown 64 MB at a time; one heap for every thread, so that what one thread frees the
+// next reuses (docs/memory.md). Older glibc ignores tunables it does not know.
 constexpr const char* kTunables =
     "glibc.malloc.hugetlb=1:glibc.malloc.mmap_threshold=268435456:"
-    "glibc.malloc.trim_threshold=1073741824:glibc.malloc.top_pad=67108864";
+    "glibc.malloc.trim_threshold=1073741824:glibc.malloc.top_pad=67108864:"
+    "glibc.malloc.arena_max=1";
 // Set for the re-executed program: "<first main's steady clock in ns>;<GLIBC_TUNABLES as it
 // was, or nothing>;<1 if it was set>".
 constexpr const char* kHandOver = "SCULPT_HUGE_PAGE_HEAP";
