@@ -134,9 +134,9 @@ SparseMatrix restrictToFree(const SparseMatrix& S, const std::vector<int>& freeD
 // points one B-spline support further than the stand-in does; those entries are left out (per
 // axis the cubic B-spline Gram entry at that distance is 1/2416 of the diagonal), so that S's
 // pattern, and its ordering and symbolic analysis, are known once K~lin is.
-SparseMatrix systemMatrix(const SparseMatrix& stiffness,
-                          const SystemPreconditioner::Request& request) {
-  SparseMatrix S = request.scales[2] * stiffness;
+SparseMatrix systemMatrix(SparseMatrix stiffness, const SystemPreconditioner::Request& request) {
+  SparseMatrix S = std::move(stiffness);  // scaled in place: no second copy of K~lin
+  S *= request.scales[2];
   const SparseMatrix& inertia = request.inertia;  // added to the diagonal of each 3x3 block
   if (inertia.nonZeros() == 0) return S;
   for (Eigen::Index column = 0; column < S.outerSize(); ++column) {
@@ -153,15 +153,15 @@ SparseMatrix systemMatrix(const SparseMatrix& stiffness,
 }
 
 std::unique_ptr<SystemPreconditioner::Factor> factorRequest(
-    const SystemPreconditioner::Request& request, SparseCholesky::Method method,
+    SystemPreconditioner::Request request, SparseCholesky::Method method,
     std::unique_ptr<SystemPreconditioner::Factor> analysed = nullptr) {
   const Clock::time_point start = Clock::now();
   auto factor = analysed ? std::move(analysed)
                          : std::make_unique<SystemPreconditioner::Factor>(method);
   const std::atomic<bool>* cancelled = request.cancelled.get();
   const FemMesh& mesh = *request.mesh;
-  const SparseMatrix stiffness =
-      request.stiffness       ? *request.stiffness
+  SparseMatrix stiffness =
+      request.stiffness       ? std::move(*request.stiffness)
       : request.restStiffness ? reducedRestStiffness(mesh, request.lame, *request.A, cancelled)
                               : reducedLinearStiffness(mesh, request.lame, *request.A);
   if (cancelled && *cancelled) return nullptr;
@@ -171,7 +171,7 @@ std::unique_ptr<SystemPreconditioner::Factor> factorRequest(
                         ? *request.modulus
                         : controlPointModulus(*request.mesh, request.lame, *request.A);
   double diagonalSum = 0;
-  factor->system = systemMatrix(stiffness, request);
+  factor->system = systemMatrix(std::move(stiffness), request);
   const SparseMatrix restricted = restrictToFree(factor->system, request.freeDofs, &diagonalSum);
   const int n = int(restricted.rows());
   double stiffnessSum = 0;
@@ -185,11 +185,13 @@ std::unique_ptr<SystemPreconditioner::Factor> factorRequest(
   const double meanDiagonal = n > 0 ? diagonalSum / n : 1.0;
   for (double shift : {0.0, 1e-10, 1e-6}) {
     if (n == 0) break;
-    SparseMatrix shifted = restricted;
-    if (shift > 0) {
+    if (shift == 0) {
+      factor->valid = factor->cholesky.factor(restricted);
+    } else {
+      SparseMatrix shifted = restricted;
       for (int i = 0; i < n; ++i) shifted.coeffRef(i, i) += shift * meanDiagonal;
+      factor->valid = factor->cholesky.factor(shifted);
     }
-    factor->valid = factor->cholesky.factor(shifted);
     if (factor->valid) break;
   }
   std::copy(request.scales, request.scales + 3, factor->scales);
@@ -214,7 +216,7 @@ std::unique_ptr<SystemPreconditioner::Factor> SystemPreconditioner::makeFactor(
       if (early.analysed->freeDofs == freeDofs) analysed = std::move(early.analysed);
     }
   }
-  return factorRequest(request, method_, std::move(analysed));
+  return factorRequest(std::move(request), method_, std::move(analysed));
 }
 
 void SystemPreconditioner::prepareFirstFactor(const FemModel& model,
@@ -254,8 +256,8 @@ SystemPreconditioner::WorkerFactor::WorkerFactor(Request request, SparseCholesky
                                                  int delay)
     : delay_(delay) {
   request.cancelled = cancelled_;
-  future_ = std::async(std::launch::async, [request = std::move(request), method] {
-    return factorRequest(request, method);
+  future_ = std::async(std::launch::async, [request = std::move(request), method]() mutable {
+    return factorRequest(std::move(request), method);
   });
 }
 
