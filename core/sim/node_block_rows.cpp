@@ -81,8 +81,22 @@ SparseMatrix reduceSymmetricNodeBlocks(const SymmetricNodeBlocks& nodes, const S
 
   // S = W + W^T, row i: W_ij and W_ji^T. S is symmetric, so row i's blocks, transposed, are
   // column i's: column 3i + c holds S_ij(c, r) at row 3j + r.
+  // Its blocks, counted first: reserving a guess and growing past it cost the first step a
+  // second copy of S in memory touched for the first time (docs/memory.md).
+  Eigen::Index entries = 0;
+  {
+    std::vector<uint32_t> seenIn(numControl, numControl);  // the last row j was counted in
+    for (uint32_t i = 0; i < numControl; ++i) {
+      const auto count = [&](uint32_t j) {
+        if (seenIn[j] != i) entries += 9;
+        seenIn[j] = i;
+      };
+      for (size_t k = W.begin[i]; k < W.begin[i + 1]; ++k) count(W.column[k]);
+      for (size_t p = columnBegin[i]; p < columnBegin[i + 1]; ++p) count(rowOf[p]);
+    }
+  }
   SparseMatrix S(3 * Eigen::Index(numControl), 3 * Eigen::Index(numControl));
-  S.reserve(Eigen::Index(2 * W.column.size()) * 9);  // a guess; the matrix grows as needed
+  S.reserve(entries);
   std::vector<std::pair<uint32_t, Eigen::Matrix3d>> rowBlocks;
   for (uint32_t i = 0; i < numControl; ++i) {
     for (size_t k = W.begin[i]; k < W.begin[i + 1]; ++k) sum.add(W.column[k], W.block[k]);
