@@ -4,9 +4,8 @@
 // Eigen 3.4.0's SparseMatrix declares a copy constructor and copy assignment but no moves, so
 // std::move, std::future::get and returns without copy elision copy every array: block10's
 // stiffness stand-in (12 MB) was copied seven times on its way to the first factor
-// (docs/memory.md). These take the other matrix's arrays instead, as later Eigen releases do;
-// the matrix moved from is left empty (a move constructor) or with this one's old contents (a
-// move assignment).
+// (docs/memory.md). These take the other matrix's arrays instead; the matrix moved from is left
+// empty (a move constructor) or with this one's old contents (a move assignment).
 SparseMatrix(SparseMatrix&& other) noexcept : SparseMatrix() { swap(other); }
 SparseMatrix& operator=(SparseMatrix&& other) noexcept {
   swap(other);
