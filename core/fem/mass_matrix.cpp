@@ -13,6 +13,7 @@
 #include "subdiv/tricubic_patch.h"
 #include "util/dense_accumulator.h"
 #include "util/parallel_for.h"
+#include "util/reserve_from_mean.h"
 
 namespace sculpt {
 namespace {
@@ -126,19 +127,6 @@ void flush(Accumulator& column, Columns& out, bool sorted, bool keepZeros) {
   out.begin.push_back(int64_t(out.rows.size()));
 }
 
-// A chunk's columns so far tell how many entries the rest will have: the chunk is reserved for
-// their mean, with a margin, after its first columns and whenever it is nearly full, instead of
-// growing by doubling (block10's node mass matrix grew 1, 2, 4, 8 and 16 MB arrays per worker,
-// each touched for the first time while the last was still held: docs/memory.md).
-constexpr uint32_t kProbeColumns = 64;
-void reserveForChunk(Columns& part, uint32_t done, uint32_t columns) {
-  const size_t entries = part.rows.size(), mean = entries / done;
-  if (done < std::min(kProbeColumns, columns) || part.rows.capacity() - entries > 2 * mean) return;
-  const size_t expected = entries + mean * (columns - done) * 9 / 8 + mean;
-  part.rows.reserve(expected);
-  part.values.reserve(expected);
-}
-
 // Columns [0, n) computed in parallel chunks by column(j, accumulator). Chunk k is worker k's
 // and the chunks follow each other in k (parallel_for.h), so the parts are in column order.
 template <class ColumnBody>
@@ -152,7 +140,7 @@ ColumnChunks columnsInParallel(uint32_t n, size_t rows, bool sorted, bool keepZe
     for (uint32_t j = begin; j < end; ++j) {
       column(j, accumulator, worker);
       flush(accumulator, part, sorted, keepZeros);
-      reserveForChunk(part, j + 1 - begin, end - begin);
+      reserveFromMean(j + 1 - begin, end - begin, part.rows, part.values);
     }
   });
   ColumnChunks chunks;

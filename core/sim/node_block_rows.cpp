@@ -3,6 +3,7 @@
 #include <utility>
 
 #include "util/dense_accumulator.h"
+#include "util/reserve_from_mean.h"
 
 namespace sculpt {
 
@@ -60,6 +61,7 @@ SparseMatrix reduceSymmetricNodeBlocks(const SymmetricNodeBlocks& nodes, const S
         sum.add(T.column[k], it.value() * T.block[k]);
     }
     endRow(W, sum);
+    reserveFromMean(i + 1, numControl, W.column, W.block);
   }
   T = {};
 
