@@ -134,9 +134,8 @@ SparseMatrix restrictToFree(const SparseMatrix& S, const std::vector<int>& freeD
 // points one B-spline support further than the stand-in does; those entries are left out (per
 // axis the cubic B-spline Gram entry at that distance is 1/2416 of the diagonal), so that S's
 // pattern, and its ordering and symbolic analysis, are known once K~lin is.
-SparseMatrix systemMatrix(SparseMatrix stiffness, const SystemPreconditioner::Request& request) {
-  SparseMatrix S = std::move(stiffness);  // scaled in place: no second copy of K~lin
-  S *= request.scales[2];
+SparseMatrix systemMatrix(SparseMatrix S, const SystemPreconditioner::Request& request) {
+  S *= request.scales[2];  // K~lin taken and scaled in place: no second copy of it
   const SparseMatrix& inertia = request.inertia;  // added to the diagonal of each 3x3 block
   if (inertia.nonZeros() == 0) return S;
   for (Eigen::Index column = 0; column < S.outerSize(); ++column) {
