@@ -12,6 +12,7 @@ PACKAGES=(
   # Libraries of the design card.
   libeigen3-dev      # Eigen: dense and sparse linear algebra (core)
   libglfw3-dev       # windows and input (app)
+  libx11-dev         # Xlib: the app's handler for a lost display (GLFW's own backend)
   libimgui-dev       # Dear ImGui panels (app)
   libglm-dev         # GL maths (render)
   libgl1-mesa-dev    # OpenGL headers and libGL (render)

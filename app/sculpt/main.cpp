@@ -21,6 +21,7 @@
 
 #include "allocator/huge_page_heap.h"
 #include "project/preferences.h"
+#include "sculpt/display_loss.h"
 #include "sculpt/options.h"
 #include "sculpt/scene_start.h"
 #include "sculpt/sculpt_app.h"
@@ -49,6 +50,7 @@ int main(int argc, char** argv) {
     std::cerr << "error: cannot open a window (no display? run under xvfb-run)\n";
     return 1;
   }
+  sculpt::app::onDisplayLoss(nullptr, nullptr);  // the app adds its unsaved work
   glfwWindowHint(GLFW_CONTEXT_VERSION_MAJOR, 3);
   glfwWindowHint(GLFW_CONTEXT_VERSION_MINOR, 3);
   glfwWindowHint(GLFW_OPENGL_PROFILE, GLFW_OPENGL_CORE_PROFILE);

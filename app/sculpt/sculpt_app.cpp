@@ -21,6 +21,7 @@
 #include "scene/scene_file.h"
 #include "sculpt/app_clock.h"
 #include "sculpt/colour_bar.h"
+#include "sculpt/display_loss.h"
 #include "sculpt/draw_benchmark.h"
 #include "sculpt/help_overlay.h"
 #include "sculpt/real_time_factor.h"
@@ -44,7 +45,6 @@ FieldKind nextField(FieldKind field) {
   const auto it = std::find(kFieldKinds.begin(), kFieldKinds.end(), field);
   return kFieldKinds[static_cast<size_t>((it - kFieldKinds.begin() + 1) % kFieldKinds.size())];
 }
-
 
 }  // namespace
 
@@ -116,11 +116,15 @@ SculptApp::SculptApp(GLFWwindow* window, const Options& options, Clock::time_poi
     scriptPath_ = options.script;
     startScript(loadSessionScript(options.script), false);  // FileError: main reports it
   }
+  // A lost display ends the process from inside an X call; the unsaved work is kept first.
+  onDisplayLoss(
+      [](void* app) { static_cast<SculptApp*>(app)->keepUnsavedWork("display lost"); }, this);
   lastFrameTime_ = rateWindowStart_ = Clock::now();
   windowReadySeconds_ = secondsSince(started_);
 }
 
 SculptApp::~SculptApp() {
+  onDisplayLoss(nullptr, nullptr);
   if (!options_.headless) savePreferencesOnClose();
   export_.reset();     // cancels an export in flight
   recording_.reset();  // its recorder observes the controller's loop

@@ -97,6 +97,8 @@ class SculptApp {
   void askBeforeClosingUnsaved();
   /// After SIGTERM or SIGINT: writes the recovery file of unsaved work and closes, unasked.
   void closeOnTerminationSignal();
+  /// Writes the recovery file of unsaved work (no GLFW or GL calls); `reason` starts its message.
+  void keepUnsavedWork(const char* reason);
   void handleInput(const ViewRect& view);
   // Tools (sculpt_tools.cpp)
   struct SurfaceHit {

@@ -205,24 +205,26 @@ void SculptApp::closeOnTerminationSignal() {
   if (pendingCapture_ != Capture::None && now - *terminationNoted_ < std::chrono::seconds(2))
     return;
   terminatedBy_ = signal;
-  const char* name = signal == SIGINT ? "SIGINT" : "SIGTERM";
-  if (document_.dirty()) {
-    storeSettingsInProject();
-    const std::filesystem::path& recovery = document_.recoveryPath();
-    try {
-      std::error_code ignored;  // a folder that cannot be made fails the save, with its reason
-      if (recovery.has_parent_path())
-        std::filesystem::create_directories(recovery.parent_path(), ignored);
-      saveProject(document_.project(), recovery);
-      std::cerr << "sculpt: " << name << ": the unsaved work is kept in " << recovery.string()
-                << " (offered at the next start)\n";
-    } catch (const std::exception& error) {
-      std::cerr << "sculpt: " << name << ": the unsaved work could not be kept: " << error.what()
-                << '\n';
-    }
-  }
+  keepUnsavedWork(signal == SIGINT ? "SIGINT" : "SIGTERM");
   closeConfirmed_ = true;
   glfwSetWindowShouldClose(window_, 1);
+}
+
+void SculptApp::keepUnsavedWork(const char* reason) {
+  if (!document_.dirty()) return;
+  storeSettingsInProject();
+  const std::filesystem::path& recovery = document_.recoveryPath();
+  try {
+    std::error_code ignored;  // a folder that cannot be made fails the save, with its reason
+    if (recovery.has_parent_path())
+      std::filesystem::create_directories(recovery.parent_path(), ignored);
+    saveProject(document_.project(), recovery);
+    std::cerr << "sculpt: " << reason << ": the unsaved work is kept in " << recovery.string()
+              << " (offered at the next start)\n";
+  } catch (const std::exception& error) {
+    std::cerr << "sculpt: " << reason << ": the unsaved work could not be kept: " << error.what()
+              << '\n';
+  }
 }
 
 void SculptApp::askBeforeClosingUnsaved() {

@@ -32,15 +32,6 @@ class WorkerPool {
       : spin_(helpers + 1 <= std::max(1u, std::thread::hardware_concurrency())) {
     for (unsigned k = 0; k < helpers; ++k) threads_.emplace_back([this] { loop(); });
   }
-  ~WorkerPool() {
-    {
-      std::lock_guard lock(mutex_);
-      stopping_ = true;
-      claims_.store(pack(job_ + 1, 0, 0), std::memory_order_release);
-    }
-    wake_.notify_all();
-    for (auto& t : threads_) t.join();
-  }
 
   // Runs task(k) once for every k in [0, count) on the caller and the helpers; returns when all
   // have ended. Calls from several threads at once are serialised.
@@ -122,7 +113,6 @@ class WorkerPool {
       {
         std::unique_lock lock(mutex_);
         wake_.wait(lock, newJob);
-        if (stopping_) return;
         seen = jobOf(claims_.load(std::memory_order_relaxed));
       }
       runClaimedChunks(seen);
@@ -135,15 +125,19 @@ class WorkerPool {
   std::condition_variable wake_, done_;
   const std::function<void(unsigned)>* task_ = nullptr;  // written under mutex_ before a job
   uint32_t job_ = 0;                                     // guarded by mutex_
-  bool stopping_ = false;                                // guarded by mutex_
   // The job, its next chunk and its chunk count; a job is published under mutex_.
   std::atomic<uint64_t> claims_{0};
   std::atomic<unsigned> ended_{0};  // chunks of the current job that have ended
 };
 
+// Never destroyed, and its helpers never joined: exit() runs static destructors while other
+// threads may still be inside a loop (a library that ends the program on a fatal error, such as
+// Xlib's default handler when the display goes away, calls exit() with the simulation mid-step),
+// and a pool torn down under them left them waiting forever for chunks nobody would run: the
+// program hung instead of ending. The helpers end with the process.
 WorkerPool& pool() {
-  static WorkerPool instance(workerCount() - 1);
-  return instance;
+  static WorkerPool* const instance = new WorkerPool(workerCount() - 1);
+  return *instance;
 }
 
 // True on the pool's own threads: a nested parallel loop then runs inline instead of waiting

@@ -1,0 +1,172 @@
+// A lost display (sculpt/display_loss.h) ends the program at once, with a message and the
+// unsaved work kept in the recovery file, instead of Xlib's exit(): that ran static destructors
+// under the simulation thread and could hang the program for good.
+
+#include "render/gl.h"
+#define GLFW_INCLUDE_NONE
+#include <GLFW/glfw3.h>
+#include <gtest/gtest.h>
+#include <signal.h>
+#include <spawn.h>
+#include <sys/wait.h>
+#include <unistd.h>
+
+#include <chrono>
+#include <filesystem>
+#include <fstream>
+#include <iterator>
+#include <optional>
+#include <string>
+#include <thread>
+
+#include "gui/installed_xlib_handler.h"
+#include "gui/sculpt_session.h"
+#include "project/project_file.h"
+#include "sculpt/display_loss.h"
+
+extern char** environ;
+
+namespace sculpt::app {
+namespace {
+
+namespace fs = std::filesystem;
+using namespace std::chrono_literals;
+
+std::string readText(const fs::path& path) {
+  std::ifstream in(path);
+  return {std::istreambuf_iterator<char>(in), std::istreambuf_iterator<char>()};
+}
+
+// The exit status of `pid` once it ends within `limit`; nullopt (and the process killed) if not.
+std::optional<int> waitFor(pid_t pid, std::chrono::milliseconds limit) {
+  const auto deadline = std::chrono::steady_clock::now() + limit;
+  int status = 0;
+  while (std::chrono::steady_clock::now() < deadline) {
+    if (::waitpid(pid, &status, WNOHANG) == pid) return status;
+    std::this_thread::sleep_for(20ms);
+  }
+  ::kill(pid, SIGKILL);
+  ::waitpid(pid, &status, 0);
+  return std::nullopt;
+}
+
+pid_t spawnShell(const std::string& command) {
+  const char* argv[] = {"/bin/sh", "-c", command.c_str(), nullptr};
+  pid_t pid = -1;
+  if (posix_spawn(&pid, "/bin/sh", nullptr, nullptr, const_cast<char**>(argv), environ) != 0)
+    return -1;
+  return pid;
+}
+
+// An X server of the test's own (Xvfb on a free display), so that it can be taken away.
+class OwnXServer {
+ public:
+  OwnXServer() {
+    int fds[2];
+    if (::pipe(fds) != 0) return;
+    // The write end is inherited by Xvfb, which writes its display number there when ready.
+    pid_ = spawnShell("exec Xvfb -displayfd " + std::to_string(fds[1]) +
+                      " -screen 0 1280x1024x24 -nolisten tcp 2>/dev/null");
+    ::close(fds[1]);
+    std::string number;
+    char c = 0;
+    while (pid_ > 0 && ::read(fds[0], &c, 1) == 1 && c != '\n') number += c;
+    ::close(fds[0]);
+    if (!number.empty()) display_ = ":" + number;
+  }
+  ~OwnXServer() { stop(); }
+  const std::string& display() const { return display_; }  // empty: Xvfb did not start
+  void stop() {
+    if (pid_ <= 0) return;
+    ::kill(pid_, SIGTERM);
+    waitFor(pid_, 10s);
+    pid_ = -1;
+  }
+
+ private:
+  pid_t pid_ = -1;
+  std::string display_;
+};
+
+// The real program on the default scene, simulating on its threads when its X server ends:
+// it ends within a second, with Xlib's exit status and our message.
+TEST(SculptWindowProcess, ALostDisplayEndsTheProgramAtOnceWithAMessage) {
+  test::ScratchDirectory scratch("sculpt_display_loss");
+  OwnXServer server;
+  ASSERT_FALSE(server.display().empty()) << "Xvfb (scripts/install-deps.sh) did not start";
+  const fs::path out = scratch.path() / "out.txt", err = scratch.path() / "err.txt";
+  const pid_t pid = spawnShell("DISPLAY=" + server.display() + " XDG_CONFIG_HOME=" +
+                               scratch.path().string() + " exec " SCULPT_BINARY_DIR
+                               "/bin/sculpt > " + out.string() + " 2> " + err.string());
+  ASSERT_GT(pid, 0);
+  const auto started = std::chrono::steady_clock::now();
+  while (readText(out).find("simulation running") == std::string::npos &&
+         std::chrono::steady_clock::now() - started < 60s)
+    std::this_thread::sleep_for(50ms);
+  ASSERT_NE(readText(out).find("simulation running"), std::string::npos) << readText(err);
+  std::this_thread::sleep_for(300ms);  // steps under way on the simulation's threads
+
+  server.stop();
+  const std::optional<int> status = waitFor(pid, 10s);
+  ASSERT_TRUE(status.has_value()) << "still running 10 s after the display went away";
+  ASSERT_TRUE(WIFEXITED(*status)) << "ended by signal " << WTERMSIG(*status);
+  EXPECT_EQ(WEXITSTATUS(*status), kDisplayLostExitStatus);
+  EXPECT_NE(readText(err).find("sculpt: the connection to the display was lost"),
+            std::string::npos)
+      << readText(err);
+  EXPECT_FALSE(fs::exists(scratch.path() / "sculpt" / "untitled.sculpt.recovery"))
+      << "nothing unsaved, nothing to recover";
+}
+
+// The handler the app installs, called as Xlib calls it, in a child of this process (it ends the
+// process): the paint stroke not yet saved is in the recovery file.
+TEST_F(SculptSession, ALostDisplayKeepsTheUnsavedWorkInTheRecoveryFile) {
+  open(std::string(SCULPT_SOURCE_DIR) + "/assets/block3.json", false);
+  auto framesUntil = [this](const auto& done) {
+    for (int k = 0; k < 600 && !done(); ++k) {
+      frames(1);
+      std::this_thread::sleep_for(5ms);
+    }
+    return done();
+  };
+  ASSERT_TRUE(framesUntil([this] {
+    return app_->sceneView().hasGeometry() && app_->sceneView().frame().physicsReady;
+  }));
+  const ViewRect view = app_->viewRect();
+  const ImVec2 middle(0.5f * (view.min.x + view.max.x), 0.5f * (view.min.y + view.max.y));
+  ToolState& tools = app_->model().tools;
+  tools.tool = ToolKind::Paint;
+  tools.field = PaintField::Youngs;
+  tools.paint.youngs = 3.0e8;
+  tools.brush().strength = 1.0f;
+  tools.brush().radiusPixels = 60.0f;
+  drag(ImVec2(middle.x - 20, middle.y), 40.0f, 0.0f, 6);
+  release();
+  ASSERT_TRUE(framesUntil([this] { return app_->document().canUndo(); }));
+  ASSERT_TRUE(app_->document().dirty());
+  const MaterialSamples painted = app_->document().project().materials;
+  const fs::path recovery = app_->document().recoveryPath();
+  ASSERT_FALSE(fs::exists(recovery));
+
+  ASSERT_TRUE(testing::xlibIoHandlerInstalled());
+  const fs::path err = folder_ / "child_err.txt";
+  const pid_t child = ::fork();
+  ASSERT_GE(child, 0);
+  if (child == 0) {  // the handler never returns; if it did, 99 says so
+    if (!std::freopen(err.c_str(), "w", stderr)) ::_exit(98);
+    testing::callXlibIoHandler();
+    ::_exit(99);
+  }
+  const std::optional<int> status = waitFor(child, 30s);
+  ASSERT_TRUE(status.has_value()) << "the child did not end";
+  ASSERT_TRUE(WIFEXITED(*status)) << "ended by signal " << WTERMSIG(*status);
+  EXPECT_EQ(WEXITSTATUS(*status), kDisplayLostExitStatus) << readText(err);
+  ASSERT_TRUE(fs::exists(recovery)) << readText(err);
+  EXPECT_TRUE(sameMaterialSamples(loadProject(recovery).materials, painted));
+  EXPECT_NE(readText(err).find("display lost: the unsaved work is kept in " + recovery.string()),
+            std::string::npos)
+      << readText(err);
+}
+
+}  // namespace
+}  // namespace sculpt::app
