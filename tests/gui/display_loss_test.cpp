@@ -122,26 +122,8 @@ TEST(SculptWindowProcess, ALostDisplayEndsTheProgramAtOnceWithAMessage) {
 // process): the paint stroke not yet saved is in the recovery file.
 TEST_F(SculptSession, ALostDisplayKeepsTheUnsavedWorkInTheRecoveryFile) {
   open(std::string(SCULPT_SOURCE_DIR) + "/assets/block3.json", false);
-  auto framesUntil = [this](const auto& done) {
-    for (int k = 0; k < 600 && !done(); ++k) {
-      frames(1);
-      std::this_thread::sleep_for(5ms);
-    }
-    return done();
-  };
-  ASSERT_TRUE(framesUntil([this] {
-    return app_->sceneView().hasGeometry() && app_->sceneView().frame().physicsReady;
-  }));
-  const ViewRect view = app_->viewRect();
-  const ImVec2 middle(0.5f * (view.min.x + view.max.x), 0.5f * (view.min.y + view.max.y));
-  ToolState& tools = app_->model().tools;
-  tools.tool = ToolKind::Paint;
-  tools.field = PaintField::Youngs;
-  tools.paint.youngs = 3.0e8;
-  tools.brush().strength = 1.0f;
-  tools.brush().radiusPixels = 60.0f;
-  drag(ImVec2(middle.x - 20, middle.y), 40.0f, 0.0f, 6);
-  release();
+  ASSERT_TRUE(framesUntilPhysics());
+  paintStrokeAcrossTheMiddle();
   ASSERT_TRUE(framesUntil([this] { return app_->document().canUndo(); }));
   ASSERT_TRUE(app_->document().dirty());
   const MaterialSamples painted = app_->document().project().materials;

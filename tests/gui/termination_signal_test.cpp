@@ -64,28 +64,11 @@ TEST_F(SculptSession, SigtermKeepsTheUnsavedStrokesInTheRecoveryFileOfferedAtThe
     ~DefaultTermination() { restoreDefaultTermination(); }
   } defaultTermination;
   open(kBlock3, false);
-  auto framesUntil = [this](const auto& done) {
-    for (int k = 0; k < 600 && !done(); ++k) {
-      frames(1);
-      std::this_thread::sleep_for(std::chrono::milliseconds(5));
-    }
-    return done();
-  };
-  ASSERT_TRUE(framesUntil([this] {
-    return app_->sceneView().hasGeometry() && app_->sceneView().frame().physicsReady;
-  }));
+  ASSERT_TRUE(framesUntilPhysics());
   const ViewRect view = app_->viewRect();
   const ImVec2 middle(0.5f * (view.min.x + view.max.x), 0.5f * (view.min.y + view.max.y));
   ToolState& tools = app_->model().tools;
-
-  // A paint stroke, finished: one undo entry.
-  tools.tool = ToolKind::Paint;
-  tools.field = PaintField::Youngs;
-  tools.paint.youngs = 3.0e8;
-  tools.brush().strength = 1.0f;
-  tools.brush().radiusPixels = 60.0f;
-  drag(ImVec2(middle.x - 20, middle.y), 40.0f, 0.0f, 6);
-  release();
+  paintStrokeAcrossTheMiddle();
   ASSERT_TRUE(framesUntil([this] { return app_->document().canUndo(); }));
   ASSERT_EQ(app_->document().undoLabel(), "Paint Young's modulus");
   const MaterialSamples painted = app_->document().project().materials;
