@@ -1,6 +1,6 @@
 // SculptApp: the user's work as a document (document.h): starting it from a scene, opening,
 // saving, undo and redo, autosave and the recovery offer, the unsaved-changes prompt, and the
-// recovery file written when SIGTERM or SIGINT ends the window.
+// recovery file written when SIGTERM, SIGINT or SIGHUP ends the window.
 
 #include <algorithm>
 #include <chrono>
@@ -205,7 +205,7 @@ void SculptApp::closeOnTerminationSignal() {
   if (pendingCapture_ != Capture::None && now - *terminationNoted_ < std::chrono::seconds(2))
     return;
   terminatedBy_ = signal;
-  keepUnsavedWork(signal == SIGINT ? "SIGINT" : "SIGTERM");
+  keepUnsavedWork(terminationSignalName(signal));
   closeConfirmed_ = true;
   glfwSetWindowShouldClose(window_, 1);
 }

@@ -98,8 +98,8 @@ int SculptApp::runWindow() {
   // short timeout, so that an idle window leaves the CPU to the builder and the simulation.
   int busyFrames = 3;
   double lastDeviceTime = glfwGetTime();
-  // SIGTERM and SIGINT close the window through the frame loop (closeOnTerminationSignal); an
-  // idle loop sees them within its wait timeout.
+  // SIGTERM, SIGINT and SIGHUP close the window through the frame loop
+  // (closeOnTerminationSignal); an idle loop sees them within its wait timeout.
   installTerminationHandlers();
   struct DefaultTermination {
     ~DefaultTermination() { restoreDefaultTermination(); }

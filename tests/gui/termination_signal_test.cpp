@@ -43,6 +43,7 @@ TEST(TerminationSignals, TheFirstSignalIsNotedAndASecondTakesTheDefaultAction) {
   const pid_t child = ::fork();
   ASSERT_GE(child, 0);
   if (child == 0) {  // only async-signal-safe calls from here on
+    ::signal(SIGINT, SIG_DFL);  // as a foreground program starts (a background job ignores it)
     installTerminationHandlers();
     ::raise(SIGINT);
     if (terminationSignal() != SIGINT) ::_exit(3);
@@ -54,6 +55,29 @@ TEST(TerminationSignals, TheFirstSignalIsNotedAndASecondTakesTheDefaultAction) {
   ASSERT_TRUE(WIFSIGNALED(status))
       << "exited with " << WEXITSTATUS(status) << " (3: the first signal was not noted)";
   EXPECT_EQ(WTERMSIG(status), SIGTERM);
+}
+
+// A background job's SIGINT (or `nohup sculpt`'s SIGHUP): a signal ignored at the start stays
+// ignored, and the others are still handled.
+TEST(TerminationSignals, ASignalIgnoredAtTheStartStaysIgnored) {
+  const pid_t child = ::fork();
+  ASSERT_GE(child, 0);
+  if (child == 0) {  // only async-signal-safe calls from here on
+    ::signal(SIGINT, SIG_IGN);
+    ::signal(SIGHUP, SIG_DFL);
+    installTerminationHandlers();
+    ::raise(SIGINT);
+    if (terminationSignal() != 0) ::_exit(3);
+    ::raise(SIGHUP);
+    if (terminationSignal() != SIGHUP) ::_exit(4);
+    restoreDefaultTermination();
+    ::raise(SIGINT);  // still ignored
+    ::_exit(0);
+  }
+  int status = 0;
+  ASSERT_EQ(::waitpid(child, &status, 0), child);
+  ASSERT_TRUE(WIFEXITED(status)) << "ended by signal " << WTERMSIG(status);
+  EXPECT_EQ(WEXITSTATUS(status), 0) << "3: SIGINT was noted; 4: SIGHUP was not";
 }
 
 // The interactive window (worker threads) drawn offscreen, with the real handler installed and
@@ -106,23 +130,34 @@ TEST_F(SculptSession, SigtermKeepsTheUnsavedStrokesInTheRecoveryFileOfferedAtThe
   EXPECT_EQ(app_->document().project().pins, kept.pins);
 }
 
-// The real program: SIGTERM to an idle window closes it through the frame loop (preferences
-// saved on the way out) with the exit status a shell gives a signal's end, 128 + 15.
-TEST(SculptWindowProcess, SigtermClosesTheWindowThroughItsLoop) {
-  test::ScratchDirectory scratch("sculpt_sigterm");
+// The real program: a signal to an idle window closes it through the frame loop (preferences
+// saved on the way out) with the exit status a shell gives a signal's end, 128 + the signal.
+void closesTheWindowThroughItsLoop(int signal) {
+  test::ScratchDirectory scratch("sculpt_signal");
   const fs::path out = scratch.path() / "out.txt", err = scratch.path() / "err.txt";
   const std::string command = "XDG_CONFIG_HOME=" + scratch.path().string() + " exec " +
                               SCULPT_BINARY_DIR "/bin/sculpt --scene " + kBlock3 + " > " +
                               out.string() + " 2> " + err.string();
   const char* argv[] = {"/bin/sh", "-c", command.c_str(), nullptr};
+  // Started as from a terminal, whatever this test inherited (nohup, a background job).
+  posix_spawnattr_t attributes;
+  ASSERT_EQ(posix_spawnattr_init(&attributes), 0);
+  sigset_t defaults;
+  sigemptyset(&defaults);
+  for (const int s : {SIGTERM, SIGINT, SIGHUP}) sigaddset(&defaults, s);
+  posix_spawnattr_setsigdefault(&attributes, &defaults);
+  posix_spawnattr_setflags(&attributes, POSIX_SPAWN_SETSIGDEF);
   pid_t pid = -1;
-  ASSERT_EQ(posix_spawn(&pid, "/bin/sh", nullptr, nullptr, const_cast<char**>(argv), environ), 0);
+  const int spawned = posix_spawn(&pid, "/bin/sh", nullptr, &attributes,
+                                  const_cast<char**>(argv), environ);
+  posix_spawnattr_destroy(&attributes);
+  ASSERT_EQ(spawned, 0);
   const auto started = std::chrono::steady_clock::now();
   while (readText(out).find("first frame") == std::string::npos &&
          std::chrono::steady_clock::now() - started < std::chrono::seconds(60))
     std::this_thread::sleep_for(std::chrono::milliseconds(50));
   ASSERT_NE(readText(out).find("first frame"), std::string::npos) << readText(err);
-  ASSERT_EQ(::kill(pid, SIGTERM), 0);
+  ASSERT_EQ(::kill(pid, signal), 0);
   int status = 0;
   pid_t done = 0;
   for (int k = 0; k < 200 && done == 0; ++k) {
@@ -132,13 +167,22 @@ TEST(SculptWindowProcess, SigtermClosesTheWindowThroughItsLoop) {
   if (done == 0) {
     ::kill(pid, SIGKILL);
     ::waitpid(pid, &status, 0);
-    FAIL() << "still running 10 s after SIGTERM";
+    FAIL() << "still running 10 s after " << terminationSignalName(signal);
   }
   ASSERT_TRUE(WIFEXITED(status)) << "ended by the signal itself, not through the loop";
-  EXPECT_EQ(WEXITSTATUS(status), 128 + SIGTERM) << readText(err);
+  EXPECT_EQ(WEXITSTATUS(status), 128 + signal) << readText(err);
   EXPECT_TRUE(fs::exists(scratch.path() / "sculpt" / "preferences.json"));
   EXPECT_FALSE(fs::exists(scratch.path() / "sculpt" / "untitled.sculpt.recovery"))
       << "nothing unsaved, nothing to recover";
+}
+
+TEST(SculptWindowProcess, SigtermClosesTheWindowThroughItsLoop) {
+  closesTheWindowThroughItsLoop(SIGTERM);
+}
+
+// The terminal that started the program was closed.
+TEST(SculptWindowProcess, SighupClosesTheWindowThroughItsLoop) {
+  closesTheWindowThroughItsLoop(SIGHUP);
 }
 
 }  // namespace
