@@ -95,7 +95,7 @@ class SculptApp {
   void syncScene();
   /// Holds a close of the window with unsaved changes and shows the prompt instead.
   void askBeforeClosingUnsaved();
-  /// After SIGTERM or SIGINT: writes the recovery file of unsaved work and closes, unasked.
+  /// After SIGTERM, SIGINT or SIGHUP: writes the recovery file of unsaved work and closes, unasked.
   void closeOnTerminationSignal();
   /// Writes the recovery file of unsaved work (no GLFW or GL calls); `reason` starts its message.
   void keepUnsavedWork(const char* reason);
