@@ -1,12 +1,19 @@
 // The worker pool behind parallelChunks: every index exactly once, whether the helpers are
 // spinning (back-to-back loops) or asleep (after a pause), from several calling threads at once,
-// and nested loops inline.
+// and nested loops inline; and exit() while a loop runs on another thread ends the program.
 #include <gtest/gtest.h>
+#include <spawn.h>
+#include <sys/wait.h>
+#include <unistd.h>
 
 #include <atomic>
 #include <chrono>
+#include <cstdlib>
+#include <string>
 #include <thread>
 #include <vector>
+
+extern char** environ;
 
 #include "util/parallel_for.h"
 
@@ -100,6 +107,60 @@ TEST(ParallelChunks, InsideAnInlineScopeLoopsRunOnTheCallingThreadAlone) {
   std::atomic<int> chunks{0};
   parallelChunks(100000, 1, [&](uint32_t, uint32_t, unsigned) { chunks.fetch_add(1); });
   EXPECT_EQ(chunks.load(), static_cast<int>(workerCount()));
+}
+
+// exit() while another thread is inside a loop (Xlib's default handler of a lost display does
+// that from the UI thread, the simulation mid-step) ends the program. The pool used to be torn
+// down by exit(), joining a helper that was still running its chunk: the program hung for good.
+// Run in a child process (this test binary again, with two workers).
+constexpr const char* kExitChild = "SCULPT_TEST_EXIT_DURING_A_LOOP";
+
+[[noreturn]] void exitWhileAHelperRunsAChunk() {
+  std::atomic<bool> helperIn{false};
+  std::thread looping([&] {
+    const std::thread::id caller = std::this_thread::get_id();
+    parallelChunks(2, 1, [&](uint32_t, uint32_t, unsigned) {
+      if (std::this_thread::get_id() == caller) {  // leave the other chunk to the helper
+        while (!helperIn) std::this_thread::yield();
+        return;
+      }
+      helperIn = true;
+      for (;;) std::this_thread::sleep_for(std::chrono::seconds(1));  // a chunk that never ends
+    });
+  });
+  looping.detach();
+  while (!helperIn) std::this_thread::yield();
+  std::this_thread::sleep_for(std::chrono::milliseconds(50));  // the caller waits for the helper
+  std::exit(0);
+}
+
+TEST(ParallelChunks, ExitWhileAnotherThreadIsInALoopEndsTheProgram) {
+  if (std::getenv(kExitChild)) exitWhileAHelperRunsAChunk();
+  std::vector<std::string> variables = {std::string(kExitChild) + "=1", "SCULPT_THREADS=2"};
+  for (char** v = environ; *v; ++v) variables.emplace_back(*v);
+  std::vector<char*> environment;
+  for (std::string& v : variables) environment.push_back(v.data());
+  environment.push_back(nullptr);
+  std::string filter = std::string("--gtest_filter=") +
+                       ::testing::UnitTest::GetInstance()->current_test_suite()->name() + "." +
+                       ::testing::UnitTest::GetInstance()->current_test_info()->name();
+  char self[] = "/proc/self/exe";
+  char* argv[] = {self, filter.data(), nullptr};
+  pid_t child = -1;
+  ASSERT_EQ(posix_spawn(&child, self, nullptr, nullptr, argv, environment.data()), 0);
+  int status = 0;
+  pid_t done = 0;
+  for (int k = 0; k < 500 && done == 0; ++k) {
+    std::this_thread::sleep_for(std::chrono::milliseconds(20));
+    done = ::waitpid(child, &status, WNOHANG);
+  }
+  if (done == 0) {
+    ::kill(child, SIGKILL);
+    ::waitpid(child, &status, 0);
+    FAIL() << "the program hung in exit() for 10 s";
+  }
+  ASSERT_TRUE(WIFEXITED(status)) << "ended by signal " << WTERMSIG(status);
+  EXPECT_EQ(WEXITSTATUS(status), 0);
 }
 
 }  // namespace
