@@ -4,6 +4,7 @@
 #include <unistd.h>
 
 #include <atomic>
+#include <csignal>
 #include <cstdio>
 #include <exception>
 
@@ -17,6 +18,9 @@ std::atomic<bool> lost{false};
 int displayLost(Display*) {
   // A second X call failing while the work is kept (none should) ends the process at once.
   if (lost.exchange(true)) ::_exit(kDisplayLostExitStatus);
+  // The session may be ending with the display (a logout): a message to a reader that is gone
+  // must not end the program before the work is kept.
+  std::signal(SIGPIPE, SIG_IGN);
   std::fprintf(stderr, "sculpt: the connection to the display was lost; closing\n");
   std::fflush(stderr);
   if (void (*keep)(void*) = keepWorkFunction.load()) {

@@ -50,12 +50,17 @@ std::optional<int> waitFor(pid_t pid, std::chrono::milliseconds limit) {
   return std::nullopt;
 }
 
-pid_t spawnShell(const std::string& command) {
+// `command` run by /bin/sh; with `stderrFd`, that descriptor as its standard error.
+pid_t spawnShell(const std::string& command, int stderrFd = -1) {
   const char* argv[] = {"/bin/sh", "-c", command.c_str(), nullptr};
+  posix_spawn_file_actions_t actions;
+  posix_spawn_file_actions_init(&actions);
+  if (stderrFd >= 0) posix_spawn_file_actions_adddup2(&actions, stderrFd, 2);
   pid_t pid = -1;
-  if (posix_spawn(&pid, "/bin/sh", nullptr, nullptr, const_cast<char**>(argv), environ) != 0)
-    return -1;
-  return pid;
+  const int spawned =
+      posix_spawn(&pid, "/bin/sh", &actions, nullptr, const_cast<char**>(argv), environ);
+  posix_spawn_file_actions_destroy(&actions);
+  return spawned == 0 ? pid : -1;
 }
 
 // An X server of the test's own (Xvfb on a free display), so that it can be taken away.
@@ -88,26 +93,38 @@ class OwnXServer {
   std::string display_;
 };
 
-// The real program on the default scene, simulating on its threads when its X server ends:
-// it ends within a second, with Xlib's exit status and our message.
-TEST(SculptWindowProcess, ALostDisplayEndsTheProgramAtOnceWithAMessage) {
-  test::ScratchDirectory scratch("sculpt_display_loss");
+// The real program on the default scene, simulating, when its X server ends. `err` empty: its
+// standard error is a pipe whose reader is gone, as when a logout ends `sculpt 2>&1 | tee log`.
+// Returns how it ended (nullopt: it did not end within 10 s).
+std::optional<int> loseTheDisplayOfARunningProgram(const fs::path& folder, const fs::path& err) {
   OwnXServer server;
-  ASSERT_FALSE(server.display().empty()) << "Xvfb (scripts/install-deps.sh) did not start";
-  const fs::path out = scratch.path() / "out.txt", err = scratch.path() / "err.txt";
+  EXPECT_FALSE(server.display().empty()) << "Xvfb (scripts/install-deps.sh) did not start";
+  if (server.display().empty()) return std::nullopt;
+  const fs::path out = folder / "out.txt";
+  int pipeFds[2] = {-1, -1};
+  if (err.empty() && ::pipe(pipeFds) == 0) ::close(pipeFds[0]);  // no reader
   const pid_t pid = spawnShell("DISPLAY=" + server.display() + " XDG_CONFIG_HOME=" +
-                               scratch.path().string() + " exec " SCULPT_BINARY_DIR
-                               "/bin/sculpt > " + out.string() + " 2> " + err.string());
-  ASSERT_GT(pid, 0);
+                                   folder.string() + " exec " SCULPT_BINARY_DIR "/bin/sculpt > " +
+                                   out.string() + (err.empty() ? "" : " 2> " + err.string()),
+                               pipeFds[1]);
+  if (pipeFds[1] >= 0) ::close(pipeFds[1]);
+  EXPECT_GT(pid, 0);
+  if (pid <= 0) return std::nullopt;
   const auto started = std::chrono::steady_clock::now();
   while (readText(out).find("simulation running") == std::string::npos &&
          std::chrono::steady_clock::now() - started < 60s)
     std::this_thread::sleep_for(50ms);
-  ASSERT_NE(readText(out).find("simulation running"), std::string::npos) << readText(err);
+  EXPECT_NE(readText(out).find("simulation running"), std::string::npos) << readText(err);
   std::this_thread::sleep_for(300ms);  // steps under way on the simulation's threads
-
   server.stop();
-  const std::optional<int> status = waitFor(pid, 10s);
+  return waitFor(pid, 10s);
+}
+
+// It ends within a second, with Xlib's exit status and our message.
+TEST(SculptWindowProcess, ALostDisplayEndsTheProgramAtOnceWithAMessage) {
+  test::ScratchDirectory scratch("sculpt_display_loss");
+  const fs::path err = scratch.path() / "err.txt";
+  const std::optional<int> status = loseTheDisplayOfARunningProgram(scratch.path(), err);
   ASSERT_TRUE(status.has_value()) << "still running 10 s after the display went away";
   ASSERT_TRUE(WIFEXITED(*status)) << "ended by signal " << WTERMSIG(*status);
   EXPECT_EQ(WEXITSTATUS(*status), kDisplayLostExitStatus);
@@ -116,6 +133,15 @@ TEST(SculptWindowProcess, ALostDisplayEndsTheProgramAtOnceWithAMessage) {
       << readText(err);
   EXPECT_FALSE(fs::exists(scratch.path() / "sculpt" / "untitled.sculpt.recovery"))
       << "nothing unsaved, nothing to recover";
+}
+
+// A message to a standard error nobody reads (SIGPIPE) does not end it before the work is kept.
+TEST(SculptWindowProcess, ALostDisplayEndsTheProgramWhenNobodyReadsItsMessages) {
+  test::ScratchDirectory scratch("sculpt_display_loss_pipe");
+  const std::optional<int> status = loseTheDisplayOfARunningProgram(scratch.path(), {});
+  ASSERT_TRUE(status.has_value()) << "still running 10 s after the display went away";
+  ASSERT_TRUE(WIFEXITED(*status)) << "ended by signal " << WTERMSIG(*status);
+  EXPECT_EQ(WEXITSTATUS(*status), kDisplayLostExitStatus);
 }
 
 // The handler the app installs, called as Xlib calls it, in a child of this process (it ends the
