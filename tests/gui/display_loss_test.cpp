@@ -23,6 +23,7 @@
 #include "gui/sculpt_session.h"
 #include "project/project_file.h"
 #include "sculpt/display_loss.h"
+#include "support/child_exit.h"
 
 extern char** environ;
 
@@ -35,19 +36,6 @@ using namespace std::chrono_literals;
 std::string readText(const fs::path& path) {
   std::ifstream in(path);
   return {std::istreambuf_iterator<char>(in), std::istreambuf_iterator<char>()};
-}
-
-// The exit status of `pid` once it ends within `limit`; nullopt (and the process killed) if not.
-std::optional<int> waitFor(pid_t pid, std::chrono::milliseconds limit) {
-  const auto deadline = std::chrono::steady_clock::now() + limit;
-  int status = 0;
-  while (std::chrono::steady_clock::now() < deadline) {
-    if (::waitpid(pid, &status, WNOHANG) == pid) return status;
-    std::this_thread::sleep_for(20ms);
-  }
-  ::kill(pid, SIGKILL);
-  ::waitpid(pid, &status, 0);
-  return std::nullopt;
 }
 
 // `command` run by /bin/sh; with `stderrFd`, that descriptor as its standard error.
@@ -84,7 +72,7 @@ class OwnXServer {
   void stop() {
     if (pid_ <= 0) return;
     ::kill(pid_, SIGTERM);
-    waitFor(pid_, 10s);
+    test::waitForExit(pid_, 10s);
     pid_ = -1;
   }
 
@@ -117,7 +105,7 @@ std::optional<int> loseTheDisplayOfARunningProgram(const fs::path& folder, const
   EXPECT_NE(readText(out).find("simulation running"), std::string::npos) << readText(err);
   std::this_thread::sleep_for(300ms);  // steps under way on the simulation's threads
   server.stop();
-  return waitFor(pid, 10s);
+  return test::waitForExit(pid, 10s);
 }
 
 // It ends within a second, with Xlib's exit status and our message.
@@ -165,7 +153,7 @@ TEST_F(SculptSession, ALostDisplayKeepsTheUnsavedWorkInTheRecoveryFile) {
     testing::callXlibIoHandler();
     ::_exit(99);
   }
-  const std::optional<int> status = waitFor(child, 30s);
+  const std::optional<int> status = test::waitForExit(child, 30s);
   ASSERT_TRUE(status.has_value()) << "the child did not end";
   ASSERT_TRUE(WIFEXITED(*status)) << "ended by signal " << WTERMSIG(*status);
   EXPECT_EQ(WEXITSTATUS(*status), kDisplayLostExitStatus) << readText(err);

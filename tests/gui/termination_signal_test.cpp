@@ -17,6 +17,7 @@
 #include <filesystem>
 #include <fstream>
 #include <iterator>
+#include <optional>
 #include <string>
 #include <thread>
 
@@ -24,6 +25,7 @@
 #include "project/autosave.h"
 #include "project/project_file.h"
 #include "sculpt/termination_signals.h"
+#include "support/child_exit.h"
 
 extern char** environ;
 
@@ -158,19 +160,10 @@ void closesTheWindowThroughItsLoop(int signal) {
     std::this_thread::sleep_for(std::chrono::milliseconds(50));
   ASSERT_NE(readText(out).find("first frame"), std::string::npos) << readText(err);
   ASSERT_EQ(::kill(pid, signal), 0);
-  int status = 0;
-  pid_t done = 0;
-  for (int k = 0; k < 200 && done == 0; ++k) {
-    std::this_thread::sleep_for(std::chrono::milliseconds(50));
-    done = ::waitpid(pid, &status, WNOHANG);
-  }
-  if (done == 0) {
-    ::kill(pid, SIGKILL);
-    ::waitpid(pid, &status, 0);
-    FAIL() << "still running 10 s after " << terminationSignalName(signal);
-  }
-  ASSERT_TRUE(WIFEXITED(status)) << "ended by the signal itself, not through the loop";
-  EXPECT_EQ(WEXITSTATUS(status), 128 + signal) << readText(err);
+  const std::optional<int> status = test::waitForExit(pid, std::chrono::seconds(10));
+  ASSERT_TRUE(status.has_value()) << "still running 10 s after " << terminationSignalName(signal);
+  ASSERT_TRUE(WIFEXITED(*status)) << "ended by the signal itself, not through the loop";
+  EXPECT_EQ(WEXITSTATUS(*status), 128 + signal) << readText(err);
   EXPECT_TRUE(fs::exists(scratch.path() / "sculpt" / "preferences.json"));
   EXPECT_FALSE(fs::exists(scratch.path() / "sculpt" / "untitled.sculpt.recovery"))
       << "nothing unsaved, nothing to recover";

@@ -9,12 +9,14 @@
 #include <atomic>
 #include <chrono>
 #include <cstdlib>
+#include <optional>
 #include <string>
 #include <thread>
 #include <vector>
 
 extern char** environ;
 
+#include "support/child_exit.h"
 #include "util/parallel_for.h"
 
 namespace sculpt {
@@ -148,19 +150,10 @@ TEST(ParallelChunks, ExitWhileAnotherThreadIsInALoopEndsTheProgram) {
   char* argv[] = {self, filter.data(), nullptr};
   pid_t child = -1;
   ASSERT_EQ(posix_spawn(&child, self, nullptr, nullptr, argv, environment.data()), 0);
-  int status = 0;
-  pid_t done = 0;
-  for (int k = 0; k < 500 && done == 0; ++k) {
-    std::this_thread::sleep_for(std::chrono::milliseconds(20));
-    done = ::waitpid(child, &status, WNOHANG);
-  }
-  if (done == 0) {
-    ::kill(child, SIGKILL);
-    ::waitpid(child, &status, 0);
-    FAIL() << "the program hung in exit() for 10 s";
-  }
-  ASSERT_TRUE(WIFEXITED(status)) << "ended by signal " << WTERMSIG(status);
-  EXPECT_EQ(WEXITSTATUS(status), 0);
+  const std::optional<int> status = test::waitForExit(child, std::chrono::seconds(10));
+  ASSERT_TRUE(status.has_value()) << "the program hung in exit() for 10 s";
+  ASSERT_TRUE(WIFEXITED(*status)) << "ended by signal " << WTERMSIG(*status);
+  EXPECT_EQ(WEXITSTATUS(*status), 0);
 }
 
 }  // namespace
