@@ -46,11 +46,12 @@ int main(int argc, char** argv) {
   } catch (const std::invalid_argument&) {
     scene.reset();
   }
+  // From the display's opening on (the scene builds meanwhile); the app adds its unsaved work.
+  sculpt::app::onDisplayLoss(nullptr, nullptr);
   if (!glfwInit()) {
     std::cerr << "error: cannot open a window (no display? run under xvfb-run)\n";
     return 1;
   }
-  sculpt::app::onDisplayLoss(nullptr, nullptr);  // the app adds its unsaved work
   glfwWindowHint(GLFW_CONTEXT_VERSION_MAJOR, 3);
   glfwWindowHint(GLFW_CONTEXT_VERSION_MINOR, 3);
   glfwWindowHint(GLFW_OPENGL_PROFILE, GLFW_OPENGL_CORE_PROFILE);
