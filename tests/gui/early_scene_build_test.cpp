@@ -2,7 +2,6 @@
 // that build over instead of starting another, and opens projects itself.
 
 #include <chrono>
-#include <thread>
 
 #include "sculpt/scene_start.h"
 #include "sculpt_session.h"
@@ -21,10 +20,7 @@ TEST_F(SculptSession, ABuildStartedBeforeTheWindowIsTakenOverNotRepeated) {
   app_ = std::make_unique<SculptApp>(window_, options, std::chrono::steady_clock::now(),
                                      LoadedPreferences{}, folder_ / "preferences.json",
                                      std::move(early));
-  for (int k = 0; k < 500 && !app_->sceneView().hasGeometry(); ++k) {
-    frames(1);
-    std::this_thread::sleep_for(std::chrono::milliseconds(10));
-  }
+  framesUntil([this] { return app_->sceneView().hasGeometry(); });
   ASSERT_TRUE(app_->sceneView().hasGeometry());
   // The first build's scene: a second load would have cancelled it and shown scene 2.
   EXPECT_EQ(geometry().sceneId, 1u);

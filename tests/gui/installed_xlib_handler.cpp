@@ -14,9 +14,9 @@ XIOErrorHandler installedHandler() {
 }  // namespace
 
 bool xlibIoHandlerInstalled() {
-  const XIOErrorHandler installed = XSetIOErrorHandler(nullptr);
-  const XIOErrorHandler xlibDefault = XSetIOErrorHandler(nullptr);  // the one set just now
-  XSetIOErrorHandler(installed);
+  const XIOErrorHandler installed = installedHandler();
+  XSetIOErrorHandler(nullptr);
+  const XIOErrorHandler xlibDefault = XSetIOErrorHandler(installed);  // the default set above
   return installed != xlibDefault;
 }
 

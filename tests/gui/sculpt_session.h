@@ -105,11 +105,11 @@ class SculptSession : public ::testing::Test {
     frames(1);
   }
   const SceneGeometry& geometry() const { return *app_->sceneView().geometry(); }
-  // Frames 5 ms apart (for the window's worker threads) until `done` holds, at most 600.
+  // Frames 10 ms apart (for the window's worker threads) until `done` holds, at most 600.
   bool framesUntil(const std::function<bool()>& done) {
     for (int k = 0; k < 600 && !done(); ++k) {
       frames(1);
-      std::this_thread::sleep_for(std::chrono::milliseconds(5));
+      std::this_thread::sleep_for(std::chrono::milliseconds(10));
     }
     return done();
   }
@@ -118,16 +118,20 @@ class SculptSession : public ::testing::Test {
       return app_->sceneView().hasGeometry() && app_->sceneView().frame().physicsReady;
     });
   }
+  // The paint tool at full strength, painting Young's modulus `youngs` (Pa).
+  void usePaintBrush(double youngs, float radiusPixels) {
+    ToolState& tools = app_->model().tools;
+    tools.tool = ToolKind::Paint;
+    tools.field = PaintField::Youngs;
+    tools.paint.youngs = youngs;
+    tools.brush().strength = 1.0f;
+    tools.brush().radiusPixels = radiusPixels;
+  }
   // A finished stroke of Young's modulus 3e8 Pa across the middle of the view: one undo entry.
   void paintStrokeAcrossTheMiddle() {
     const ViewRect view = app_->viewRect();
     const ImVec2 middle(0.5f * (view.min.x + view.max.x), 0.5f * (view.min.y + view.max.y));
-    ToolState& tools = app_->model().tools;
-    tools.tool = ToolKind::Paint;
-    tools.field = PaintField::Youngs;
-    tools.paint.youngs = 3.0e8;
-    tools.brush().strength = 1.0f;
-    tools.brush().radiusPixels = 60.0f;
+    usePaintBrush(3.0e8, 60.0f);
     drag(ImVec2(middle.x - 20, middle.y), 40.0f, 0.0f, 6);
     release();
   }

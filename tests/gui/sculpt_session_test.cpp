@@ -8,7 +8,6 @@
 #include <gtest/gtest.h>
 
 #include <algorithm>
-#include <chrono>
 #include <cstdio>
 #include <cstdlib>
 #include <filesystem>
@@ -18,7 +17,6 @@
 #include <map>
 #include <memory>
 #include <string>
-#include <thread>
 
 #include "edit/topology_edit.h"
 #include "io/control_mesh_json.h"
@@ -85,11 +83,7 @@ TEST_F(SculptSession, PullPaintAStiffEarExtrudeAndUndo) {
 
   // 2. Paint a stiff ear: Young's modulus 100x the body's, under the highest surface point.
   ToolState& tools = app_->model().tools;
-  tools.tool = ToolKind::Paint;
-  tools.field = PaintField::Youngs;
-  tools.paint.youngs = 3.0e8;
-  tools.brush().strength = 1.0f;
-  tools.brush().radiusPixels = 45.0f;
+  usePaintBrush(3.0e8, 45.0f);
   tools.mirrorX = false;
   app_->model().display.field = FieldKind::YoungsModulus;
   const ImVec2 ear = screen(rest.row(top).transpose() - Eigen::Vector3d(0, 0.6, 0));
@@ -312,10 +306,7 @@ TEST_F(SculptSession, WorkLeftByACrashIsOfferedAndRecovered) {
   const fs::path recovery = folder_ / "untitled.sculpt.recovery";
   saveProject(lost, recovery);
   open({}, false);  // the interactive window (worker threads), drawn offscreen here
-  for (int k = 0; k < 600 && app_->model().document.recoveryOffer.empty(); ++k) {
-    frames(1);
-    std::this_thread::sleep_for(std::chrono::milliseconds(10));
-  }
+  framesUntil([this] { return !app_->model().document.recoveryOffer.empty(); });
   ASSERT_EQ(app_->model().document.recoveryOffer, recovery.string())
       << app_->document().recoveryPath() << " geometry " << app_->sceneView().hasGeometry();
   frames(2, "sculpt-recovery-offer.png");
@@ -326,12 +317,10 @@ TEST_F(SculptSession, WorkLeftByACrashIsOfferedAndRecovered) {
   EXPECT_TRUE(app_->document().path().empty()) << "an untitled project stays untitled";
   EXPECT_EQ(app_->document().project().pins, lost.pins);
   EXPECT_TRUE(sameControlMesh(app_->document().project().controlMesh, lost.controlMesh));
-  for (int k = 0; k < 600 && !(app_->sceneView().hasGeometry() &&
-                               app_->sceneView().geometry()->controlMesh->numCells() == 27);
-       ++k) {
-    frames(1);
-    std::this_thread::sleep_for(std::chrono::milliseconds(10));
-  }
+  framesUntil([this] {
+    return app_->sceneView().hasGeometry() &&
+           app_->sceneView().geometry()->controlMesh->numCells() == 27;
+  });
   EXPECT_EQ(app_->sceneView().geometry()->controlMesh->numCells(), 27u) << "block3 is shown";
 
   // Ctrl+Q (over the view) and File > Quit with unsaved changes ask too, and the window stays.
