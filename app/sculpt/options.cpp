@@ -10,9 +10,9 @@
 namespace sculpt::app {
 
 const char* const kUsage =
-    "usage: sculpt [options]\n"
-    "  --scene FILE           control mesh (.json) or surface (.obj, .gltf, .glb) to simulate;\n"
-    "                         default: the Stanford bunny in a hexahedral cage\n"
+    "usage: sculpt [options] [FILE]\n"
+    "  FILE, --scene FILE     project (.sculpt), control mesh (.json) or surface (.obj, .gltf,\n"
+    "                         .glb) to open; default: the Stanford bunny in a hexahedral cage\n"
     "  --dt S                 simulated seconds per step (default: the scene's, 1/60)\n"
     "  --script FILE          replay a session script (docs/file-formats.md) on the scene\n"
     "  --level K              simulation level (1..3)\n"
@@ -80,15 +80,21 @@ double positive(const std::string& option, const std::string& text) {
 
 Options parseOptions(int argc, char** argv, bool* helpShown) {
   Options options;
-  bool framesGiven = false;
+  bool framesGiven = false, sceneGiven = false;
   for (int i = 1; i < argc; ++i) {
     const std::string arg = argv[i];
     const auto value = [&]() -> std::string {
       if (i + 1 >= argc) throw std::invalid_argument(arg + " needs a value");
       return argv[++i];
     };
-    if (arg == "--scene" || arg == "--surface") {
-      options.scene = value();
+    if (arg == "--scene" || arg == "--surface" || (!arg.empty() && arg[0] != '-')) {
+      // A file named on its own is the scene, as a shell or a file manager passes it.
+      const std::string file = arg[0] == '-' ? value() : arg;
+      if (sceneGiven)
+        throw std::invalid_argument("two scenes given ('" + options.scene + "' and '" + file +
+                                    "'): the window opens one");
+      options.scene = file;
+      sceneGiven = true;
     } else if (arg == "--script") {
       options.script = value();
     } else if (arg == "--cage") {
@@ -113,7 +119,8 @@ Options parseOptions(int argc, char** argv, bool* helpShown) {
       const auto field = parseField(name);
       if (!field)
         throw std::invalid_argument(
-            "--field must be none, youngs, density, displacement, strain or damping (got '" + name + "')");
+            "--field must be none, youngs, density, displacement, strain or damping (got '" +
+            name + "')");
       options.display.field = *field;
     } else if (arg == "--field-per-cell") {
       options.display.smoothField = false;

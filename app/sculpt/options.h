@@ -1,10 +1,11 @@
 #pragma once
 // The window's command line:
-//   sculpt [--scene FILE] [--level K] [--dt S] [--method M] [--field F] [--clip x|y|z] [--wireframe]
-//          [--show-cells] [--show-control] [--preset blender|stylus] [--ui-scale S]
-//          [--headless [--screenshot OUT.png] [--out FINAL.vtk] [--frames N] [--supersample 1|2|4] [--transparent]
-//           [--no-ui] [--record-seconds T [--fps F] --record-out OUT ...]] [--size WxH]
-//          [--quit-after SECONDS] [--bench N]
+//   sculpt [FILE | --scene FILE] [--level K] [--dt S] [--method M] [--field F] [--clip x|y|z]
+//          [--wireframe] [--show-cells] [--show-control] [--preset blender|stylus]
+//          [--ui-scale S] [--size WxH] [--quit-after SECONDS] [--bench N]
+//          [--headless [--screenshot OUT.png] [--out FINAL.vtk] [--frames N]
+//           [--supersample 1|2|4] [--transparent] [--no-ui]
+//           [--record-seconds T [--fps F] --record-out OUT ...]]
 
 #include <optional>
 #include <string>
@@ -15,7 +16,8 @@
 namespace sculpt::app {
 
 struct Options {
-  std::string scene;  ///< control mesh (.json) or surface (.obj/.gltf/.glb); empty: the bunny
+  /// Project (.sculpt), control mesh (.json) or surface (.obj/.gltf/.glb); empty: the bunny.
+  std::string scene;
   std::string script;  ///< a session script to replay once the simulation runs
   std::optional<int> level;  ///< simulation level K
   std::optional<int> cage;   ///< cage cells across a surface scene
