@@ -88,7 +88,7 @@ Options parseOptions(int argc, char** argv, bool* helpShown) {
       return argv[++i];
     };
     if (arg == "--scene" || arg == "--surface" || (!arg.empty() && arg[0] != '-')) {
-      // A file named on its own is the scene, as a shell or a file manager passes it.
+      // A file named on its own is the scene (`sculpt work.sculpt`), as launchers pass it.
       const std::string file = arg[0] == '-' ? value() : arg;
       if (sceneGiven)
         throw std::invalid_argument("two scenes given ('" + options.scene + "' and '" + file +
