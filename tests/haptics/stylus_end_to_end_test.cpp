@@ -214,8 +214,8 @@ TEST(StylusEndToEnd, ProbingARegionPaintedTenTimesStifferPushesBackHarder) {
   const double stiff = meanForce(1.1, 1.6), soft = meanForce(3.0, 3.5);
   std::printf("[ measured ] probe 0.2 m deep: painted 10x stiffer %.3f N, as painted %.3f N\n", stiff, soft);
   ASSERT_GT(soft, 0.02) << "the contact pushes back";
-  // 1.6x in Release, and under AddressSanitizer with the script paced (1.17x under
-  // ThreadSanitizer before the pacing), so the margin asked for is small: larger, not a
+  // 1.6x in Release, and under both sanitizers with the script paced (1.17x under
+  // ThreadSanitizer before the pacing). The margin asked for stays small: larger, not a
   // calibrated ratio.
   EXPECT_GT(stiff, 1.05 * soft);
   EXPECT_LE(stiff, device.info().maxForce);
