@@ -141,8 +141,8 @@ TEST(KillDuringSave, ProjectAndRecoveryAreWholeAfterEveryKillAndTheWorkIsOffered
   uint64_t projectGeneration = 0, highest = 0;
   unsigned midWrite = 0, offered = 0, progressed = 0, justSaved = 0;
   // The kills must land where they matter: at least a fifth of `rounds` while a temporary file
-  // existed (about a third land there on an idle machine). A loaded machine shifts the share, so
-  // the test kills on, up to four times `rounds`, until that many did.
+  // existed (a fifth to a third of the kills did on an idle machine). A loaded machine shifts
+  // the share, so the test kills on, up to four times `rounds`, until that many did.
   const unsigned wantedMidWrite = rounds / 5, maxRounds = 4 * rounds;
   unsigned round = 0;
   const auto started = std::chrono::steady_clock::now();
