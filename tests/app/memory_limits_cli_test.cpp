@@ -52,10 +52,11 @@ TEST_F(MemoryLimitsCliTest, WideCellIsRefusedNamingTheCell) {
 TEST_F(MemoryLimitsCliTest, OutOfMemoryOnAWorkerThreadIsAnErrorLine) {
   // With the estimate out of the way and the address space capped, the stencils' composition
   // runs out of memory on the workers: one error line, not std::terminate.
-#if defined(__SANITIZE_ADDRESS__)
-  // AddressSanitizer maps terabytes of shadow memory at start: under `ulimit -v` the program
-  // aborts before main ("ReserveShadowMemoryRange failed ... Perhaps you're using ulimit -v").
-  GTEST_SKIP() << "an address-space cap and AddressSanitizer cannot run together";
+#if defined(__SANITIZE_ADDRESS__) || defined(__SANITIZE_THREAD__)
+  // The sanitizers map terabytes of shadow memory at start: under `ulimit -v` the program
+  // aborts before main (AddressSanitizer: "ReserveShadowMemoryRange failed ... Perhaps you're
+  // using ulimit -v"; ThreadSanitizer: "CHECK failed: sanitizer_allocator_primary64.h").
+  GTEST_SKIP() << "an address-space cap and a sanitizer cannot run together";
 #endif
   const std::string file = prism(600);
   const std::string command =
