@@ -54,17 +54,34 @@ struct BlockScene {
     }
     return frame;
   }
-  // The factor by which a script's times are stretched so that its holds last as long in
-  // simulated time as written: 1 where the simulation steps several times faster than the
-  // clock. Where it cannot (a sanitizer build: 45 ms a step here, against 0.8 ms in Release),
-  // the simulation is slowed to a third of what it can do, and the script has to follow.
-  double paceForThisBuild() {
+  // Scripts are written in simulated seconds; `stretch` turns them into the clock's. It is 1
+  // where the simulation steps several times faster than the clock. Where it cannot (a sanitizer
+  // build: 45 ms a step here, against 0.8 ms in Release), the simulation is slowed to a third of
+  // what it can do, and the script follows, so that its holds last as long as written.
+  double stretch = 1.0;
+  void paceForThisBuild() {
     const SceneFrame frame = waitFor(waitFor(0.0).simulatedTime + 0.1);
     const double capacity = SceneSettings().timeStep / (1e-3 * frame.stepMs);
-    if (!(capacity < 3.0)) return 1.0;
-    const double rate = capacity / 3.0;
-    controller.loop().setRealTimeRate(rate);
-    return 1.0 / rate;
+    if (capacity < 3.0) {
+      const double rate = capacity / 3.0;
+      controller.loop().setRealTimeRate(rate);
+      stretch = 1.0 / rate;
+    }
+    std::printf("[ measured ] script times stretched %.2fx to the simulation's pace\n", stretch);
+  }
+  // Clock seconds for `t` seconds of the script.
+  double wall(double t) const { return stretch * t; }
+  // A key of a device script at `t` seconds of the script.
+  nlohmann::json key(double t, const Eigen::Vector3d& p, int buttons) const {
+    return {{"t", wall(t)}, {"position", {p.x(), p.y(), p.z()}}, {"buttons", buttons}};
+  }
+  // Records of ticks in [from, to) s of the script.
+  std::vector<ServoRecord> between(const std::vector<ServoRecord>& records, double from,
+                                   double to) const {
+    std::vector<ServoRecord> out;
+    for (const ServoRecord& r : records)
+      if (r.time >= wall(from) && r.time < wall(to)) out.push_back(r);
+    return out;
   }
   // Device coordinates of a scene point under the default mapping (Touch).
   Eigen::Vector3d device(const Eigen::Vector3d& scenePoint) const {
@@ -72,17 +89,6 @@ struct BlockScene {
   }
 };
 
-nlohmann::json key(double t, const Eigen::Vector3d& p, int buttons) {
-  return {{"t", t}, {"position", {p.x(), p.y(), p.z()}}, {"buttons", buttons}};
-}
-
-// Records of ticks in [from, to) s of servo time.
-std::vector<ServoRecord> between(const std::vector<ServoRecord>& records, double from, double to) {
-  std::vector<ServoRecord> out;
-  for (const ServoRecord& r : records)
-    if (r.time >= from && r.time < to) out.push_back(r);
-  return out;
-}
 
 TEST(StylusEndToEnd, APullMovesTheSolidWithEqualAndOppositeForcesAndUnpluggingZeroesAtOnce) {
   BlockScene block;
@@ -92,23 +98,21 @@ TEST(StylusEndToEnd, APullMovesTheSolidWithEqualAndOppositeForcesAndUnpluggingZe
 
   // Grab just inside the +z face, low on it (the top is pinned), pull 1 cm (device) along +z,
   // hold, and unplug while holding: the times below in simulated seconds.
-  const double stretch = block.paceForThisBuild();
-  std::printf("[ measured ] script times stretched %.2fx to the simulation's pace\n", stretch);
+  block.paceForThisBuild();
   Clock::time_point started;
   const auto after = [&](double seconds) {
     return started + std::chrono::duration_cast<Clock::duration>(
-                         std::chrono::duration<double>(stretch * seconds));
+                         std::chrono::duration<double>(block.wall(seconds)));
   };
   const Eigen::Vector3d grab = block.device(Eigen::Vector3d(1.5, 0.8, 2.8));
   const Eigen::Vector3d pulled = grab + Eigen::Vector3d(0, 0, 0.01);
   const nlohmann::json json = {{"version", 1}, {"model", "touch"}, {"mode", "trajectory"},
-                               {"keys", {key(0, grab, 0), key(0.2 * stretch, grab, 1),
-                                         key(1.2 * stretch, pulled, 1),
-                                         key(3.0 * stretch, pulled, 1)}}};
+                               {"keys", {block.key(0, grab, 0), block.key(0.2, grab, 1),
+                                         block.key(1.2, pulled, 1), block.key(3.0, pulled, 1)}}};
   MockPhantom device(parseDeviceScript(json));
   HapticSessionSettings settings;
   settings.tool = HapticTool::Pull;
-  settings.recordTicks = static_cast<size_t>(std::ceil(5000 * stretch));
+  settings.recordTicks = static_cast<size_t>(std::ceil(1000 * block.wall(5.0)));
   HapticSession session(block.controller.loop(), device, block.scene, settings);
   const ForceScale scale = session.status().scale;
   ASSERT_GT(scale.sceneNewtonsPerDeviceNewton, 1.0) << scale.describe();
@@ -138,7 +142,7 @@ TEST(StylusEndToEnd, APullMovesTheSolidWithEqualAndOppositeForcesAndUnpluggingZe
   double worst = 0, meanOnSolid = 0;
   int n = 0;
   std::vector<ServoRecord> hold;
-  for (const ServoRecord& r : between(records, 2.0 * stretch, 2.29 * stretch))
+  for (const ServoRecord& r : block.between(records, 2.0, 2.29))
     if (r.connected && r.acting) hold.push_back(r);
   ASSERT_GT(hold.size(), 200u);
   for (const ServoRecord& r : hold) {
@@ -182,13 +186,10 @@ TEST(StylusEndToEnd, ProbingARegionPaintedTenTimesStifferPushesBackHarder) {
 
   // Press the stylus 0.2 m (scene) into the face at x = 0.6 (stiff), withdraw, the same at
   // x = 2.4 (as painted), withdraw: the times below in simulated seconds.
-  const double stretch = block.paceForThisBuild();
-  std::printf("[ measured ] script times stretched %.2fx to the simulation's pace\n", stretch);
+  block.paceForThisBuild();
   const double depth = 0.2;
   auto p = [&](double x, double z) { return block.device(Eigen::Vector3d(x, 1.0, z)); };
-  auto keyAt = [&](double t, const Eigen::Vector3d& position) {
-    return key(stretch * t, position, 0);
-  };
+  auto keyAt = [&](double t, const Eigen::Vector3d& position) { return block.key(t, position, 0); };
   const nlohmann::json json = {
       {"version", 1}, {"model", "touch"}, {"mode", "trajectory"},
       {"keys", {keyAt(0, p(0.6, 3.3)), keyAt(0.3, p(0.6, 3.3)), keyAt(0.6, p(0.6, 3 - depth)),
@@ -198,16 +199,16 @@ TEST(StylusEndToEnd, ProbingARegionPaintedTenTimesStifferPushesBackHarder) {
   MockPhantom device(parseDeviceScript(json));
   HapticSessionSettings settings;
   settings.tool = HapticTool::Probe;
-  settings.recordTicks = static_cast<size_t>(std::ceil(6000 * stretch));
+  settings.recordTicks = static_cast<size_t>(std::ceil(1000 * block.wall(6.0)));
   HapticSession session(block.controller.loop(), device, block.scene, settings);
   session.start();
-  std::this_thread::sleep_for(std::chrono::duration<double>(3.9 * stretch));
+  std::this_thread::sleep_for(std::chrono::duration<double>(block.wall(3.9)));
   session.stop();
 
   const auto meanForce = [&](double from, double to) {
     double sum = 0;
     int n = 0;
-    for (const ServoRecord& r : between(session.servo().records(), stretch * from, stretch * to))
+    for (const ServoRecord& r : block.between(session.servo().records(), from, to))
       if (r.acting) sum += r.commanded.norm(), ++n;
     return n > 100 ? sum / n : 0.0;
   };
