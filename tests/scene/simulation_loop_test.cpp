@@ -24,7 +24,8 @@ namespace {
 using Clock = std::chrono::steady_clock;
 
 std::unique_ptr<ScenePhysics> blockPhysics(const SceneSettings& settings) {
-  const SceneSource source(SceneKind::ControlMesh, std::string(SCULPT_SOURCE_DIR) + "/assets/block3.json");
+  const SceneSource source(SceneKind::ControlMesh,
+                           std::string(SCULPT_SOURCE_DIR) + "/assets/block3.json");
   std::optional<SceneBuildPhase1> phase1 = buildSceneGeometry(source, settings, 1);
   EXPECT_TRUE(phase1.has_value());
   StageTimes times;
@@ -60,6 +61,10 @@ TEST(SimulationLoop, StepsAtTheSetRateWhileAToolIsUpdatedAt1kHz) {
   std::unique_ptr<ScenePhysics> physics = blockPhysics(settings);
   const double capacity = settings.timeStep / medianStepSeconds(*physics);
   const double rate = std::min(0.5, capacity / 4.0);
+  const double period = settings.timeStep / rate;
+  // The drag: 2 s, or twelve periods where that is longer, so that the measured ratio spans
+  // enough steps for a late one not to sway it.
+  const double drag = std::max(2.0, 12.0 * period);
   std::printf("[ measured ] this build steps block3 at %.2fx real time\n", capacity);
   // What the observer writes lives longer than the loop (declared after it).
   std::mutex mutex;
@@ -79,13 +84,14 @@ TEST(SimulationLoop, StepsAtTheSetRateWhileAToolIsUpdatedAt1kHz) {
   std::this_thread::sleep_for(std::chrono::milliseconds(300));
   ToolInput input;
   input.position = input.restPoint.emplace(1.5, 1.5, 1.5);
-  const uint64_t stroke = loop.beginStroke(std::make_unique<PullStroke>(PullStroke::Settings{}), input);
+  const uint64_t stroke =
+      loop.beginStroke(std::make_unique<PullStroke>(PullStroke::Settings{}), input);
   input.restPoint.reset();
   const Clock::time_point start = Clock::now();
   Clock::time_point next = start;
   int updates = 0;
-  while (Clock::now() - start < std::chrono::seconds(2)) {
-    input.position = Eigen::Vector3d(1.5 + 0.5 * seconds(Clock::now() - start), 1.5, 1.5);
+  while (seconds(Clock::now() - start) < drag) {
+    input.position = Eigen::Vector3d(1.5 + seconds(Clock::now() - start) / drag, 1.5, 1.5);
     loop.updateStroke(stroke, input);
     ++updates;
     next += std::chrono::milliseconds(1);
@@ -106,23 +112,22 @@ TEST(SimulationLoop, StepsAtTheSetRateWhileAToolIsUpdatedAt1kHz) {
   double shortest = 1e9;
   for (size_t k = 1; k < inside.size(); ++k)
     shortest = std::min(shortest, stepWall[inside[k]] - stepWall[inside[k - 1]]);
-  const double period = settings.timeStep / rate;
   std::printf("[ measured ] %d updates in %.3f s; %zu steps; simulated %.4f s in %.4f s wall: "
               "ratio %.4f (set %.3f); shortest step interval %.2f ms (period %.2f ms)\n",
               updates, windowEnd - windowStart, inside.size(), simulated, wall, simulated / wall,
               rate, 1e3 * shortest, 1e3 * period);
-  EXPECT_GT(updates, 1000);
+  EXPECT_GT(updates, 500 * drag);
   EXPECT_NEAR(simulated / wall, rate, 0.1 * rate);
-  // A command never triggers a step: over 2,000 commands there are no more steps than the clock
-  // allows (the shortest interval is printed only: on a loaded machine a late step is followed
-  // at once by the next one that is due).
+  // A command never triggers a step: over a command a millisecond there are no more steps than
+  // the clock allows (the shortest interval is printed only: on a loaded machine a late step is
+  // followed at once by the next one that is due).
   EXPECT_LE(static_cast<double>(inside.size()), wall / period + 2.0);
   // The probe saw the stroke with the newest target the loop had applied.
   ASSERT_EQ(seen.strokeCount, 1);
   EXPECT_EQ(seen.strokes[0].strokeId, stroke);
   // The drag reached x = 2.5 at the end; the newest step that applied it is at most a period or
   // two (a late step) before the end.
-  EXPECT_GT(seen.strokes[0].target.x(), 1.5 + 0.5 * (2.0 - 2.0 * period - 0.1));
+  EXPECT_GT(seen.strokes[0].target.x(), 1.5 + (drag - 2.0 * period - 0.1) / drag);
   EXPECT_LE(seen.strokes[0].target.x(), 2.5 + 1e-9);
   EXPECT_GT(seen.strokes[0].stiffness, 0.0);
 }
@@ -135,7 +140,8 @@ TEST(SimulationLoop, ProbeIsReadFromAnotherThreadAt1kHz) {
   install(loop, blockPhysics(SceneSettings{}));
   ToolInput input;
   input.position = input.restPoint.emplace(1.5, 2.0, 1.5);
-  const uint64_t stroke = loop.beginStroke(std::make_unique<PullStroke>(PullStroke::Settings{}), input);
+  const uint64_t stroke =
+      loop.beginStroke(std::make_unique<PullStroke>(PullStroke::Settings{}), input);
 
   // The servo starts once the stroke is in the probe (the scene's first step may come before it).
   const auto deadline = Clock::now() + std::chrono::seconds(30);
@@ -154,8 +160,8 @@ TEST(SimulationLoop, ProbeIsReadFromAnotherThreadAt1kHz) {
       if (p.generation < lastGeneration || p.simulatedTime < lastTime) ok = false;
       if (p.generation > lastGeneration) {
         ++distinct;
-        if (p.strokeCount != 1 || !p.strokes[0].point.allFinite() || !p.strokes[0].velocity.allFinite() ||
-            !(p.strokes[0].force >= 0.0))
+        if (p.strokeCount != 1 || !p.strokes[0].point.allFinite() ||
+            !p.strokes[0].velocity.allFinite() || !(p.strokes[0].force >= 0.0))
           ok = false;
       }
       lastGeneration = p.generation;
@@ -172,8 +178,8 @@ TEST(SimulationLoop, ProbeIsReadFromAnotherThreadAt1kHz) {
   }
   servo.join();
   loop.endStroke(stroke, input);
-  std::printf("[ measured ] %d probe reads, %d distinct probes, %llu steps observed\n", reads.load(),
-              distinct.load(), static_cast<unsigned long long>(observedSteps.load()));
+  std::printf("[ measured ] %d probe reads, %d distinct probes, %llu steps observed\n",
+              reads.load(), distinct.load(), static_cast<unsigned long long>(observedSteps.load()));
   EXPECT_TRUE(ok);
   EXPECT_EQ(reads, 1000);
   // One probe per step (and the stroke's begin): at real time about 60 in the second (fewer in
@@ -193,7 +199,8 @@ TEST(SimulationLoop, ObserversSeeEveryStepAndCommandsWaitForTheStepBoundary) {
   install(loop, blockPhysics(SceneSettings{}));
   ToolInput input;
   input.position = input.restPoint.emplace(1.5, 1.5, 1.5);
-  const uint64_t stroke = loop.beginStroke(std::make_unique<PullStroke>(PullStroke::Settings{}), input);
+  const uint64_t stroke =
+      loop.beginStroke(std::make_unique<PullStroke>(PullStroke::Settings{}), input);
   for (int i = 0; i < 5; ++i) {
     input.position.x() += 0.1;
     loop.updateStroke(stroke, input);
