@@ -40,7 +40,8 @@ struct Block3 {
     nodes = rest;
     for (Eigen::Index n = 0; n < rest.rows(); ++n) {
       const double angle = 0.05 * rest(n, 1);
-      const Eigen::Matrix3d R = Eigen::AngleAxisd(angle, Eigen::Vector3d::UnitY()).toRotationMatrix();
+      const Eigen::Matrix3d R =
+          Eigen::AngleAxisd(angle, Eigen::Vector3d::UnitY()).toRotationMatrix();
       nodes.row(n) = (R * (rest.row(n).transpose() - Eigen::Vector3d(1.5, 0, 1.5)) +
                       Eigen::Vector3d(1.5, 0, 1.5))
                          .transpose();
@@ -97,7 +98,8 @@ void BM_TricubicKernel(benchmark::State& state) {
   std::vector<double> rest(size_t(count) * size_t(size));
   for (uint32_t e = 0; e < count; ++e) {
     double* packed = rest.data() + size_t(e) * size_t(size);
-    packTricubicInverseJacobians(mesh.tricubicInverseJacobian.data() + size_t(e) * 64, false, packed);
+    packTricubicInverseJacobians(mesh.tricubicInverseJacobian.data() + size_t(e) * 64, false,
+                                 packed);
     packTricubicMaterial(mesh.gaussVolume.data() + size_t(e) * 64,
                          mesh.gaussLame.data() + size_t(e) * 64, false, packed);
   }
@@ -322,8 +324,9 @@ void BM_PolarRotations(benchmark::State& state) {
     }
     benchmark::DoNotOptimize(out.data());
   }
-  state.counters["ns_per_rotation"] = benchmark::Counter(
-      double(F.size()), benchmark::Counter::kIsIterationInvariantRate | benchmark::Counter::kInvert);
+  state.counters["ns_per_rotation"] =
+      benchmark::Counter(double(F.size()), benchmark::Counter::kIsIterationInvariantRate |
+                                               benchmark::Counter::kInvert);
 }
 BENCHMARK(BM_PolarRotations)->Arg(1)->Arg(4)->Unit(benchmark::kMicrosecond);
 

@@ -27,7 +27,8 @@ std::vector<uint8_t> downsample(std::span<const uint8_t> rgba, int width, int he
           for (int c = 0; c < 3; ++c) colour[c] += a * p[c];
           alpha += a;
         }
-      uint8_t* q = out.data() + 4 * (static_cast<size_t>(y) * static_cast<size_t>(w) + static_cast<size_t>(x));
+      uint8_t* q = out.data() +
+                   4 * (static_cast<size_t>(y) * static_cast<size_t>(w) + static_cast<size_t>(x));
       for (int c = 0; c < 3; ++c)
         q[c] = alpha > 0 ? static_cast<uint8_t>(std::lround(colour[c] / alpha)) : 0;
       q[3] = static_cast<uint8_t>(std::lround(alpha / samples));

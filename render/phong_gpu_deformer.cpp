@@ -17,12 +17,14 @@ namespace {
 
 constexpr size_t kFloatsPerNode = 12;  ///< offset x_i - H_i X_i and H_i, in 3 RGBA texels
 
-constexpr std::array<const char*, 3> kFeedback = {"deformedPosition", "deformedNormal", "fieldValue"};
+constexpr std::array<const char*, 3> kFeedback = {"deformedPosition", "deformedNormal",
+                                                  "fieldValue"};
 constexpr size_t kFeedbackFloats = 7;  ///< per vertex: position, normal, field value
 
 /// The surface fragment shader: lighting and the colour map prepended.
 std::string surfaceFragmentSource() {
-  return shaderSource({shaders::kLightingGlsl, shaders::kColourMapGlsl}, shaders::kPhongSurfaceFrag);
+  return shaderSource({shaders::kLightingGlsl, shaders::kColourMapGlsl},
+                      shaders::kPhongSurfaceFrag);
 }
 
 /// Replaces the contents of a texture buffer.
@@ -104,7 +106,8 @@ PhongGpuDeformer::PhongGpuDeformer(const VolumeMesh& rest, std::span<const uint3
   glGenVertexArrays(1, &vao_);
   glBindVertexArray(vao_);
   localBuffer_ = floatAttribute(1, 3, makeVertexBuffer(local.data(), local.size_bytes()));
-  normalBuffer_ = floatAttribute(2, 3, makeVertexBuffer(restNormals.data(), restNormals.size_bytes()));
+  normalBuffer_ =
+      floatAttribute(2, 3, makeVertexBuffer(restNormals.data(), restNormals.size_bytes()));
   // Static per-vertex rest point X and inverse rest Jacobian d xi / d X (columns), so that the
   // shader needs no rest node positions and no matrix inverse.
   std::vector<float> restPoint(3 * static_cast<size_t>(numVertices_));
@@ -115,7 +118,8 @@ PhongGpuDeformer::PhongGpuDeformer(const VolumeMesh& rest, std::span<const uint3
     const Eigen::Matrix3d inverse = cellJacobian(rest, cells[v], xi).inverse();
     for (int d = 0; d < 3; ++d) restPoint[3 * v + d] = static_cast<float>(X(d));
     for (int c = 0; c < 3; ++c)
-      for (int r = 0; r < 3; ++r) inverseJacobian[9 * v + 3 * c + r] = static_cast<float>(inverse(r, c));
+      for (int r = 0; r < 3; ++r)
+        inverseJacobian[9 * v + 3 * c + r] = static_cast<float>(inverse(r, c));
   }
   restPointBuffer_ =
       floatAttribute(4, 3, makeVertexBuffer(restPoint.data(), restPoint.size() * sizeof(float)));
@@ -123,8 +127,9 @@ PhongGpuDeformer::PhongGpuDeformer(const VolumeMesh& rest, std::span<const uint3
       makeVertexBuffer(inverseJacobian.data(), inverseJacobian.size() * sizeof(float));
   for (int c = 0; c < 3; ++c) {
     glEnableVertexAttribArray(static_cast<GLuint>(5 + c));
-    glVertexAttribPointer(static_cast<GLuint>(5 + c), 3, GL_FLOAT, GL_FALSE, 9 * sizeof(float),
-                          reinterpret_cast<const void*>(3 * sizeof(float) * static_cast<size_t>(c)));
+    glVertexAttribPointer(
+        static_cast<GLuint>(5 + c), 3, GL_FLOAT, GL_FALSE, 9 * sizeof(float),
+        reinterpret_cast<const void*>(3 * sizeof(float) * static_cast<size_t>(c)));
   }
   // The cell's 8 node ids per vertex (two ivec4; -1 padding for tetrahedra): attributes are
   // cheaper for the vertex shader than fetches from the cell table.
@@ -135,8 +140,9 @@ PhongGpuDeformer::PhongGpuDeformer(const VolumeMesh& rest, std::span<const uint3
   vertexNodesBuffer_ = makeVertexBuffer(vertexNodes.data(), vertexNodes.size() * sizeof(int32_t));
   for (int half = 0; half < 2; ++half) {
     glEnableVertexAttribArray(static_cast<GLuint>(8 + half));
-    glVertexAttribIPointer(static_cast<GLuint>(8 + half), 4, GL_INT, 8 * sizeof(int32_t),
-                           reinterpret_cast<const void*>(4 * sizeof(int32_t) * static_cast<size_t>(half)));
+    glVertexAttribIPointer(
+        static_cast<GLuint>(8 + half), 4, GL_INT, 8 * sizeof(int32_t),
+        reinterpret_cast<const void*>(4 * sizeof(int32_t) * static_cast<size_t>(half)));
   }
   glBindVertexArray(0);
 
@@ -154,9 +160,11 @@ PhongGpuDeformer::PhongGpuDeformer(const VolumeMesh& rest, std::span<const uint3
   glEnableVertexAttribArray(0);
   glVertexAttribPointer(0, 3, GL_FLOAT, GL_FALSE, stride, nullptr);
   glEnableVertexAttribArray(1);
-  glVertexAttribPointer(1, 3, GL_FLOAT, GL_FALSE, stride, reinterpret_cast<const void*>(3 * sizeof(float)));
+  glVertexAttribPointer(1, 3, GL_FLOAT, GL_FALSE, stride,
+                        reinterpret_cast<const void*>(3 * sizeof(float)));
   glEnableVertexAttribArray(2);
-  glVertexAttribPointer(2, 1, GL_FLOAT, GL_FALSE, stride, reinterpret_cast<const void*>(6 * sizeof(float)));
+  glVertexAttribPointer(2, 1, GL_FLOAT, GL_FALSE, stride,
+                        reinterpret_cast<const void*>(6 * sizeof(float)));
   glGenBuffers(1, &indexBuffer_);
   glBindBuffer(GL_ELEMENT_ARRAY_BUFFER, indexBuffer_);
   glBindVertexArray(0);
@@ -198,7 +206,8 @@ void PhongGpuDeformer::setFrame(
   alpha_ = attribute_ ? 0.5f : static_cast<float>(gradientBlend(method));
   if (nodes.rows() != restNodes_.rows())
     throw std::invalid_argument("PhongGpuDeformer: " + std::to_string(nodes.rows()) +
-                                " node positions for " + std::to_string(restNodes_.rows()) + " nodes");
+                                " node positions for " + std::to_string(restNodes_.rows()) +
+                                " nodes");
   // 3 texels per node: x_i - H_i X_i, then H_i = alpha F_i row by row (H_i = 0 when gradients
   // are not given).
   std::vector<float> data(kFloatsPerNode * static_cast<size_t>(nodes.rows()), 0.0f);
@@ -235,7 +244,8 @@ void PhongGpuDeformer::setAttributeNeighbours(const CompressedRows<NodeWeight>& 
     weights.push_back(static_cast<float>(w.weight));
   }
   if (nodes.empty()) nodes.push_back(0), weights.push_back(0.0f);  // keep the buffers non-empty
-  uploadBuffer(neighbourRangeBuffer_, ranges.data(), ranges.size() * sizeof(int32_t), GL_STATIC_DRAW);
+  uploadBuffer(neighbourRangeBuffer_, ranges.data(), ranges.size() * sizeof(int32_t),
+               GL_STATIC_DRAW);
   uploadBuffer(attributeNodesBuffer_, nodes.data(), nodes.size() * sizeof(int32_t), GL_STATIC_DRAW);
   uploadBuffer(attributeWeightsBuffer_, weights.data(), weights.size() * sizeof(float),
                GL_STATIC_DRAW);
@@ -297,7 +307,8 @@ void PhongGpuDeformer::deform(SurfaceField field) const {
   feedbackField_ = field;
 }
 
-void PhongGpuDeformer::drawTriangles(const glm::mat4& modelView, const glm::mat4& projection) const {
+void PhongGpuDeformer::drawTriangles(const glm::mat4& modelView,
+                                     const glm::mat4& projection) const {
   glUniformMatrix4fv(drawProgram_.uniform("modelView"), 1, GL_FALSE, &modelView[0][0]);
   glUniformMatrix4fv(drawProgram_.uniform("projection"), 1, GL_FALSE, &projection[0][0]);
   glBindVertexArray(drawVao_);

@@ -53,7 +53,8 @@ class PhongGpuDeformer {
   PhongGpuDeformer& operator=(const PhongGpuDeformer&) = delete;
 
   /// Uploads node positions (#nodes by 3) and node gradients F_i (O(nodes)); `method` picks the
-  /// interpolation (a change of method needs a new setFrame). Attribute needs setAttributeNeighbours() first (std::logic_error otherwise).
+  /// interpolation (a change of method needs a new setFrame). Attribute needs
+  /// setAttributeNeighbours() first (std::logic_error otherwise).
   void setFrame(const Eigen::Matrix<double, Eigen::Dynamic, 3, Eigen::RowMajor>& nodes,
                 const std::vector<Eigen::Matrix3d>& gradients, InterpolationMethod method);
   /// Per vertex, its attribute-method neighbour nodes and weights (attributeTransferWeights).
@@ -73,7 +74,8 @@ class PhongGpuDeformer {
   /// Triangle indices (3 per triangle) of the embedded surface, uploaded once.
   void setTriangles(std::span<const uint32_t> indices);
   /// Draws the deformed surface (the vertex shader deforms, the fragment shader lights).
-  void draw(const glm::mat4& modelView, const glm::mat4& projection, const SurfaceStyle& style) const;
+  void draw(const glm::mat4& modelView, const glm::mat4& projection,
+            const SurfaceStyle& style) const;
   uint32_t numVertices() const { return numVertices_; }
 
  private:
@@ -95,7 +97,8 @@ class PhongGpuDeformer {
   GLuint frameBuffer_ = 0, frameTexture_ = 0;
   GLuint feedbackBuffer_ = 0;
   GLuint restPointBuffer_ = 0, inverseJacobianBuffer_ = 0, vertexNodesBuffer_ = 0;
-  GLuint neighbourRangeBuffer_ = 0, neighbourRangeTexture_ = 0;  ///< per vertex (first, count) of the attribute method
+  GLuint neighbourRangeBuffer_ = 0,
+         neighbourRangeTexture_ = 0;  ///< per vertex (first, count) of the attribute method
   GLuint attributeNodesBuffer_ = 0, attributeNodesTexture_ = 0;
   GLuint attributeWeightsBuffer_ = 0, attributeWeightsTexture_ = 0;
   GLuint cellFieldBuffer_ = 0, cellFieldTexture_ = 0;

@@ -7,7 +7,8 @@
 
 namespace sculpt::render {
 
-/// Writes top-row-first RGBA8 pixels as a PNG, atomically. Throws std::runtime_error (FileError on I/O).
+/// Writes top-row-first RGBA8 pixels as a PNG, atomically. Throws std::runtime_error (FileError on
+/// I/O).
 void writePng(const std::filesystem::path& path, int width, int height,
               std::span<const uint8_t> rgba);
 

@@ -44,7 +44,9 @@ std::string shaderSource(std::initializer_list<const char*> libraries, const cha
   return source + body;
 }
 
-std::string litFragmentSource(const char* body) { return shaderSource({shaders::kLightingGlsl}, body); }
+std::string litFragmentSource(const char* body) {
+  return shaderSource({shaders::kLightingGlsl}, body);
+}
 
 ShaderProgram::ShaderProgram(std::string_view name, const char* vertexSource,
                              const char* fragmentSource,

@@ -29,7 +29,8 @@ void SurfaceRenderer::setTriangles(std::span<const uint32_t> indices) {
   indexCount_ = uploadTriangleIndices(vao_, indexBuffer_, indices);
 }
 
-void SurfaceRenderer::setVertices(std::span<const float> positions, std::span<const float> normals) {
+void SurfaceRenderer::setVertices(std::span<const float> positions,
+                                  std::span<const float> normals) {
   glBindBuffer(GL_ARRAY_BUFFER, positionBuffer_);
   glBufferData(GL_ARRAY_BUFFER, static_cast<GLsizeiptr>(positions.size_bytes()), positions.data(),
                GL_DYNAMIC_DRAW);

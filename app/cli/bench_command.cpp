@@ -171,7 +171,8 @@ int benchSubdivide(const CliArgs& args, std::string& file) {
 int bench(const CliArgs& args, std::string& file) {
   if (args.has("help")) {
     std::cout << "usage:\n"
-              << kBenchUsage << kBenchTable1Usage << "      FEM options (bench fem requires --levels or --trilinear):\n"
+              << kBenchUsage << kBenchTable1Usage
+              << "      FEM options (bench fem requires --levels or --trilinear):\n"
               << kFemOptionsUsage;
     return kExitSuccess;
   }

@@ -59,7 +59,8 @@ int benchDeform(const CliArgs& args) {
   const std::string methodName = args.value("method").value_or("phong");
   const auto method = parseInterpolationMethod(methodName);
   if (!method)
-    throw UsageError("unknown method '" + methodName + "' (expected phong, linear, vertex or attribute)");
+    throw UsageError("unknown method '" + methodName +
+                     "' (expected phong, linear, vertex or attribute)");
 
   LatticeSpec spec;
   spec.cubes = {20, 20, 20};
@@ -135,7 +136,8 @@ int benchDeform(const CliArgs& args) {
   if (compare)
     std::cerr << "bench deform: linear frames interleaved in the same run " << median(linearSamples)
               << " ms; median ratio " << methodName << "/linear " << median(ratios) << '\n';
-  const std::string schemeName(gradientSchemeName(scheme)), otherName(gradientSchemeName(otherScheme));
+  const std::string schemeName(gradientSchemeName(scheme)),
+      otherName(gradientSchemeName(otherScheme));
   if (other)
     std::cerr << "bench deform: " << otherName << " gradients interleaved in the same run "
               << median(otherSamples) << " ms; median ratio " << schemeName << "/" << otherName

@@ -286,7 +286,8 @@ int benchScene(const CliArgs& args, const std::string& file, const BenchRun& giv
   BenchRun run = given;
   run.levels = std::to_string(scene.settings.level);
   const Clock::time_point setupStart = Clock::now();
-  const std::optional<SceneBuildPhase1> phase1 = buildSceneGeometry(scene.source, scene.settings, 1);
+  const std::optional<SceneBuildPhase1> phase1 =
+      buildSceneGeometry(scene.source, scene.settings, 1);
   StageTimes times;
   std::unique_ptr<ScenePhysics> physics =
       phase1 ? ScenePhysics::build(phase1->geometry, phase1->solid, scene.settings, nullptr, &times)

@@ -35,9 +35,9 @@ const char* const kBenchTable1Usage =
     "  bench table1 [--steps N] [--models DIR]\n"
     "      The paper's Table 1 beside this build: each of its eight models (DIR, default\n"
     "      assets/table1/ of the source tree) at the level 0-3 whose element count is nearest\n"
-    "      the paper's (0: trilinear on the control cells), the lowest layer fixed, under gravity;\n"
-    "      the median of N steps (default 30, after warm-up) of each integrator, paper and\n"
-    "      implicit. Prints a Markdown table; the last line is models=8\n"
+    "      the paper's (0: trilinear on the control cells), the lowest layer fixed, under\n"
+    "      gravity; the median of N steps (default 30, after warm-up) of each integrator,\n"
+    "      paper and implicit. Prints a Markdown table; the last line is models=8\n"
     "      min_speedup_paper=<x> min_speedup_implicit=<x> (the least of our FPS over the\n"
     "      paper's). Exit 1 when a step fails.\n";
 

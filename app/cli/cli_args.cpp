@@ -43,8 +43,8 @@ CliArgs CliArgs::parse(std::span<const std::string> args, std::span<const Option
       }
       for (int extra = 0; extra < spec->extraValues; ++extra) {
         if (i + 1 >= args.size())
-          throw UsageError("option '--" + name + "' needs " + std::to_string(spec->extraValues + 1) +
-                           " values");
+          throw UsageError("option '--" + name + "' needs " +
+                           std::to_string(spec->extraValues + 1) + " values");
         value += ' ' + args[++i];
       }
       result.options_.emplace_back(name, std::move(value));

@@ -290,7 +290,8 @@ int deformCommand(const CliArgs& args, std::string& file) {
     checkAttributeCost(rest, surface.numVertices(), options.settings.attributeRadius);
   file = options.surfacePath;
   // Progress lines for large surfaces (embedding a million points takes about a second).
-  ProgressReporter progress = surface.positions.rows() > 200'000 ? stderrProgress() : ProgressReporter{};
+  ProgressReporter progress =
+      surface.positions.rows() > 200'000 ? stderrProgress() : ProgressReporter{};
   EmbeddedDeformer deformer(std::move(rest), surface.positions, options.settings, &progress);
   const Embedding& embedding = deformer.embedding();
   if (embedding.outsideCount > 0) {

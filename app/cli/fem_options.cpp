@@ -80,8 +80,8 @@ FemCommandOptions parseFemOptions(const CliArgs& args) {
   for (const std::string& value : args.values("force")) {
     const size_t space = value.find(' ');
     if (space == std::string::npos) throw UsageError("--force needs BOX and FX,FY,FZ");
-    options.forces.push_back(
-        {parseBox(value.substr(0, space), "force"), parseVector3(value.substr(space + 1), "force")});
+    options.forces.push_back({parseBox(value.substr(0, space), "force"),
+                              parseVector3(value.substr(space + 1), "force")});
   }
   return options;
 }

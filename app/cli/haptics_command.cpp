@@ -43,7 +43,8 @@ namespace {
 
 
 haptics::NamedHapticTool toolNamed(const std::string& name) {
-  if (const std::optional<haptics::NamedHapticTool> named = haptics::hapticToolNamed(name)) return *named;
+  if (const std::optional<haptics::NamedHapticTool> named = haptics::hapticToolNamed(name))
+    return *named;
   throw UsageError("--tool " + name + ": expected pull, probe, paint or inflate");
 }
 
@@ -82,7 +83,8 @@ int hapticsCommand(const CliArgs& args, std::string& file) {
     std::cout << "usage:\n" << kHapticsUsage;
     return kExitSuccess;
   }
-  if (args.positional().size() != 1) throw UsageError("haptics needs exactly one SCENE (see --help)");
+  if (args.positional().size() != 1)
+    throw UsageError("haptics needs exactly one SCENE (see --help)");
   if (args.requiredValue("device") != "mock")
     throw UsageError("--device " + args.requiredValue("device") +
                      ": only the mock device runs from the command line (a real stylus runs in "
@@ -92,8 +94,8 @@ int hapticsCommand(const CliArgs& args, std::string& file) {
   file = args.positional()[0];
   const std::string deviceScriptPath = args.requiredValue("device-script");
   const haptics::DeviceScript deviceScript = haptics::loadDeviceScript(deviceScriptPath);
-  const auto [tool, paint] =
-      toolNamed(args.value("tool").value_or(deviceScript.tool.empty() ? "pull" : deviceScript.tool));
+  const auto [tool, paint] = toolNamed(
+      args.value("tool").value_or(deviceScript.tool.empty() ? "pull" : deviceScript.tool));
   const double seconds = args.has("seconds") ? numberIn(args, "seconds", 0.01, 600)
                                              : deviceScript.duration() + 0.5;
   const double factor = args.has("force-factor") ? numberIn(args, "force-factor", 1e-6, 1e6) : 1.0;
@@ -111,8 +113,10 @@ int hapticsCommand(const CliArgs& args, std::string& file) {
 
   SimulationLoop loop(true);
   std::atomic<uint64_t> steps{0};
-  loop.addStepObserver([&steps](const StepState&) { steps.fetch_add(1, std::memory_order_relaxed); });
-  loop.setProblemHandler([](const std::string& problem) { std::cerr << "haptics: " << problem << '\n'; });
+  loop.addStepObserver(
+      [&steps](const StepState&) { steps.fetch_add(1, std::memory_order_relaxed); });
+  loop.setProblemHandler(
+      [](const std::string& problem) { std::cerr << "haptics: " << problem << '\n'; });
   loop.install(std::move(physics), std::move(first));
 
   haptics::MockPhantom device(deviceScript);
@@ -143,7 +147,8 @@ int hapticsCommand(const CliArgs& args, std::string& file) {
   }
   std::this_thread::sleep_until(start + std::chrono::duration<double>(seconds));
   session.stop();
-  const double elapsed = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
+  const double elapsed =
+      std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
   const uint64_t simulated = steps.load() - stepsAtStart;
   loop.setPlaying(false);
 

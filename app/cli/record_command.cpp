@@ -78,7 +78,8 @@ int recordCommand(const CliArgs& args, std::string& file) {
     std::cout << "usage:\n" << kRecordUsage;
     return kExitSuccess;
   }
-  if (args.positional().size() != 1) throw UsageError("record needs exactly one SCENE (see --help)");
+  if (args.positional().size() != 1)
+    throw UsageError("record needs exactly one SCENE (see --help)");
   file = args.positional()[0];
   std::vector<Output> outputs;
   for (const std::string& out : args.values("out")) {
@@ -88,9 +89,12 @@ int recordCommand(const CliArgs& args, std::string& file) {
   }
   if (outputs.empty()) throw UsageError("--out is required (one or more)");
   const double fps = args.has("fps") ? parseNumber(args.requiredValue("fps"), "--fps") : 30.0;
-  if (const std::string problem = frameRateProblem(fps); !problem.empty()) throw UsageError(problem);
+  if (const std::string problem = frameRateProblem(fps); !problem.empty())
+    throw UsageError(problem);
   const double keyTolerance =
-      args.has("key-tolerance") ? parseNumber(args.requiredValue("key-tolerance"), "--key-tolerance") : 1e-3;
+      args.has("key-tolerance")
+          ? parseNumber(args.requiredValue("key-tolerance"), "--key-tolerance")
+          : 1e-3;
   if (!(keyTolerance > 0.0 && keyTolerance < 1.0))
     throw UsageError("--key-tolerance must be more than 0 and less than 1 (a fraction of the "
                      "bounding-box diagonal)");
@@ -98,8 +102,9 @@ int recordCommand(const CliArgs& args, std::string& file) {
   CliScene scene = cliSceneFor(args, file, "record");
   if (!args.has("seconds") && !scene.script)
     throw UsageError("--seconds is required (or --script, whose length is the default)");
-  const double recorded = args.has("seconds") ? parseNumber(args.requiredValue("seconds"), "--seconds")
-                                              : scene.script->duration();
+  const double recorded = args.has("seconds")
+                              ? parseNumber(args.requiredValue("seconds"), "--seconds")
+                              : scene.script->duration();
   if (!(recorded >= 0.0) || !std::isfinite(recorded))
     throw UsageError("--seconds must be a finite number >= 0");
   const double wantedFrames = std::floor(recorded * fps + 0.5) + 1.0;
@@ -180,7 +185,8 @@ int recordCommand(const CliArgs& args, std::string& file) {
     }
   }
   std::printf("frames=%u seconds=%.9g vertices=%u keys=%u bytes=%llu\n", take->frameCount(),
-              take->duration(), surface.maxVertices(), keys, static_cast<unsigned long long>(bytes));
+              take->duration(), surface.maxVertices(), keys,
+              static_cast<unsigned long long>(bytes));
   return failures ? kExitBadInput : kExitSuccess;
 }
 

@@ -57,12 +57,15 @@ ExportResult renderRecording(const std::string& scene, const CliArgs& args, doub
                                       formatNumber(fps), "--record-out", out.string()};
   if (scene != kDefaultSceneName) command.insert(command.end(), {"--scene", scene});
   for (const char* option : {"script", "cage", "dt"})
-    if (args.has(option)) command.insert(command.end(), {std::string("--") + option, args.requiredValue(option)});
+    if (args.has(option))
+      command.insert(command.end(), {std::string("--") + option, args.requiredValue(option)});
   if (args.has("levels") || args.has("level"))
-    command.insert(command.end(), {"--level", args.requiredValue(args.has("levels") ? "levels" : "level")});
+    command.insert(command.end(),
+                   {"--level", args.requiredValue(args.has("levels") ? "levels" : "level")});
   if (render.noUi) command.push_back("--no-ui");
   if (render.transparent) command.push_back("--transparent");
-  if (render.supersample) command.insert(command.end(), {"--supersample", std::to_string(*render.supersample)});
+  if (render.supersample)
+    command.insert(command.end(), {"--supersample", std::to_string(*render.supersample)});
   if (render.size) command.insert(command.end(), {"--size", *render.size});
 
   std::string line;
@@ -77,8 +80,9 @@ ExportResult renderRecording(const std::string& scene, const CliArgs& args, doub
   std::cerr << "record: rendering " << out.string() << " with the window program\n";
   const int status = std::system(line.c_str());
   if (status != 0)
-    throw std::runtime_error(out.string() + ": the window program failed to render it (exit status " +
-                             std::to_string(WIFEXITED(status) ? WEXITSTATUS(status) : status) + ")");
+    throw std::runtime_error(
+        out.string() + ": the window program failed to render it (exit status " +
+        std::to_string(WIFEXITED(status) ? WEXITSTATUS(status) : status) + ")");
 
   ExportResult result;
   result.frames = frames;

@@ -245,7 +245,8 @@ int simulateScene(const CliArgs& args, const std::string& file, const std::strin
       ScenePhysics::build(phase1->geometry, phase1->solid, settings, nullptr, &times);
   std::cerr << "simulate: " << phase1->geometry->description << ", "
             << physics->model().numControlPoints() << " control points\n";
-  if (script) physics->playScript(*script);  // from the step after the build's first one, as the window
+  if (script)
+    physics->playScript(*script);  // from the step after the build's first one, as the window
   Simulator& simulator = physics->simulator();
   StepTotals totals = runSteps(2, steps, out, simulator, [&] { return physics->step(); }, [&] {
     for (const std::string& line : physics->takeScriptLog())

@@ -25,7 +25,8 @@ const char* const kStudyUsage =
     "      cells, tets and hexes, node gradients by average and by fit; Kelvinlet grab/twist/\n"
     "      pinch at h/eps = 0.5, 0.25, 0.125) and writes DIR/phong-study.md and\n"
     "      DIR/phong-convergence-<case>.png. Last line: the slopes, phong_tet=<s>\n"
-    "      phong_fit_tet=<s> linear_tet=<s> ... phong_hex_surface=<s> ... phong_fit_hex_corner=<s>\n";
+    "      phong_fit_tet=<s> linear_tet=<s> ... phong_hex_surface=<s> ...\n"
+    "      phong_fit_hex_corner=<s>\n";
 
 namespace {
 
@@ -112,9 +113,10 @@ std::filesystem::path writeChart(const std::filesystem::path& dir, const SchemeP
   addLine(average, kVertex, "vertex, average", kMethodColour[kVertex], true);
   addLine(average, kPhong, "phong, average", kMethodColour[kPhong], false);
   addLine(pair.fit, kPhong, "phong, fit", kFitColour, false);
-  const std::filesystem::path path = dir / (std::string("phong-convergence-") +
-                                            (average.cells == StudyCells::Tetrahedra ? "tet" : "hex") +
-                                            "-" + placementName(average.placement) + ".png");
+  const std::filesystem::path path =
+      dir / (std::string("phong-convergence-") +
+             (average.cells == StudyCells::Tetrahedra ? "tet" : "hex") + "-" +
+             placementName(average.placement) + ".png");
   writeLogLogChartPng(path, chart);
   return path;
 }
@@ -170,11 +172,12 @@ int study(const CliArgs& args) {
     }
   md += summary + sections;
 
-  md += "\n## Regularized Kelvinlets (eps = 1, nu = 0.45, largest displacement eps/4)\n\n"
-        "2000 test points in the ball of radius 1.5 eps; tet lattice of [-2, 2]^3 with cube edge h;\n"
-        "phong with the paper's averaged node gradients (all test points are interior).\n\n"
-        "| lattice | brush | h/eps | rms linear | rms phong | rms ratio | max ratio |\n"
-        "|---|---|---|---|---|---|---|\n";
+  md +=
+      "\n## Regularized Kelvinlets (eps = 1, nu = 0.45, largest displacement eps/4)\n\n"
+      "2000 test points in the ball of radius 1.5 eps; tet lattice of [-2, 2]^3 with cube edge h;\n"
+      "phong with the paper's averaged node gradients (all test points are interior).\n\n"
+      "| lattice | brush | h/eps | rms linear | rms phong | rms ratio | max ratio |\n"
+      "|---|---|---|---|---|---|---|\n";
   const double ratios[] = {0.5, 0.25, 0.125};
   for (bool jittered : {false, true}) {
     std::cerr << "study: Kelvinlets, " << (jittered ? "jittered" : "regular") << " lattice\n";

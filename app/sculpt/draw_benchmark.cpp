@@ -21,16 +21,18 @@ double timed(Draw draw) {
   const auto start = std::chrono::steady_clock::now();
   draw();
   glFinish();
-  return std::chrono::duration<double, std::milli>(std::chrono::steady_clock::now() - start).count();
+  return std::chrono::duration<double, std::milli>(std::chrono::steady_clock::now() - start)
+      .count();
 }
 
 }  // namespace
 
-DrawMeasurement measureDrawing(render::PhongGpuDeformer& deformer,
-                               const Eigen::Matrix<double, Eigen::Dynamic, 3, Eigen::RowMajor>& nodes,
-                               const std::vector<Eigen::Matrix3d>& gradients,
-                               InterpolationMethod method, std::span<const uint32_t> triangles,
-                               const glm::mat4& view, const glm::mat4& projection, int repetitions) {
+DrawMeasurement measureDrawing(
+    render::PhongGpuDeformer& deformer,
+    const Eigen::Matrix<double, Eigen::Dynamic, 3, Eigen::RowMajor>& nodes,
+    const std::vector<Eigen::Matrix3d>& gradients, InterpolationMethod method,
+    std::span<const uint32_t> triangles, const glm::mat4& view, const glm::mat4& projection,
+    int repetitions) {
   deformer.setFrame(nodes, gradients, method);
   std::vector<float> positions, normals;
   deformer.capture(positions, normals);

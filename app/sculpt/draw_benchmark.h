@@ -24,10 +24,11 @@ struct DrawMeasurement {
 /// Draws `repetitions` times each way into the bound framebuffer (cleared each time). Every
 /// deformed draw starts from a new frame (setFrame with these nodes and gradients), so that the
 /// deformation pass runs each time as it does when the simulation publishes a state per frame.
-DrawMeasurement measureDrawing(render::PhongGpuDeformer& deformer,
-                               const Eigen::Matrix<double, Eigen::Dynamic, 3, Eigen::RowMajor>& nodes,
-                               const std::vector<Eigen::Matrix3d>& gradients,
-                               InterpolationMethod method, std::span<const uint32_t> triangles,
-                               const glm::mat4& view, const glm::mat4& projection, int repetitions);
+DrawMeasurement measureDrawing(
+    render::PhongGpuDeformer& deformer,
+    const Eigen::Matrix<double, Eigen::Dynamic, 3, Eigen::RowMajor>& nodes,
+    const std::vector<Eigen::Matrix3d>& gradients, InterpolationMethod method,
+    std::span<const uint32_t> triangles, const glm::mat4& view, const glm::mat4& projection,
+    int repetitions);
 
 }  // namespace sculpt::app

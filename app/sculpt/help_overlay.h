@@ -1,6 +1,7 @@
 #pragma once
-// The help overlay (`?` or F1, docs/design/ux.md Navigation): the mouse gestures of the current navigation
-// preset and every key binding of the key map, grouped View / Simulation / Display / File.
+// The help overlay (`?` or F1, docs/design/ux.md Navigation): the mouse gestures of the current
+// navigation preset and every key binding of the key map, grouped View / Simulation / Display /
+// File.
 
 #include <string>
 #include <vector>

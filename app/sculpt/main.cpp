@@ -1,10 +1,11 @@
 // sculpt: the application window. See app/sculpt/options.h (or `sculpt --help`) for the command
 // line and README.md for the window's panels, navigation and keys.
 //
-// Without --scene it shows the default scene: the Stanford bunny (assets/bunny.obj, refined three times
-// with Loop subdivision) embedded in a hexahedral cage and hanging under gravity, Phong-deformed on
-// the GPU. --headless renders offscreen (still through a hidden GLFW window: run it under xvfb-run
-// on a machine without a display) and writes a screenshot or prints benchmark figures.
+// Without --scene it shows the default scene: the Stanford bunny (assets/bunny.obj, refined three
+// times with Loop subdivision) embedded in a hexahedral cage and hanging under gravity,
+// Phong-deformed on the GPU. --headless renders offscreen (still through a hidden GLFW window: run
+// it under xvfb-run on a machine without a display) and writes a screenshot or prints benchmark
+// figures.
 
 // GL entry points come from render/gl.h; GLFW must not include its own GL header first.
 #include "render/gl.h"

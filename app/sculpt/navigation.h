@@ -1,7 +1,7 @@
 #pragma once
-// How the keyboard and the mouse drive the window, as logic without a window (see docs/design/ux.md,
-// Navigation): a remappable key map with a text form for the preferences file, and the two mouse
-// presets that turn pointer input into camera motion or tool strokes.
+// How the keyboard and the mouse drive the window, as logic without a window (see
+// docs/design/ux.md, Navigation): a remappable key map with a text form for the preferences file,
+// and the two mouse presets that turn pointer input into camera motion or tool strokes.
 //
 // Key codes are GLFW's (GLFW_KEY_*; Dear ImGui 1.86 uses the same codes) and modifiers GLFW's
 // GLFW_MOD_SHIFT | _CONTROL | _ALT | _SUPER bits; Caps Lock / Num Lock bits are ignored.
@@ -107,7 +107,8 @@ class KeyMap {
  public:
   /// An empty map.
   KeyMap() = default;
-  /// The bindings of docs/design/ux.md (numpad views with top-row digit fallbacks, F, Home, ?, F1, ...).
+  /// The bindings of docs/design/ux.md (numpad views with top-row digit fallbacks, F, Home, ?, F1,
+  /// ...).
   static KeyMap defaults();
 
   /// The action bound to key + modifiers (lock bits ignored), or nullopt.

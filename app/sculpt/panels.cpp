@@ -265,7 +265,8 @@ void scenePanel(AppModel& m) {
   }
   if (ImGui::CollapsingHeader("Simulation", ImGuiTreeNodeFlags_DefaultOpen)) {
     int integrator = s.integrator == Integrator::Implicit ? 0 : 1;
-    bool changed = ImGui::Combo("Integrator", &integrator, "Implicit (stable)\0Paper (CG, explicit)\0");
+    bool changed =
+        ImGui::Combo("Integrator", &integrator, "Implicit (stable)\0Paper (CG, explicit)\0");
     s.integrator = integrator == 0 ? Integrator::Implicit : Integrator::Paper;
     int model = s.elasticModel == ElasticModel::Barrier ? 0 : 1;
     if (ImGui::Combo("Elastic model", &model, "Inversion barrier\0Co-rotated (paper)\0")) {
@@ -314,7 +315,8 @@ void displayPanel(AppModel& m) {
         "one order less in the surface cells. Used by Phong and Vertex.");
   ImGui::EndDisabled();
   int field = static_cast<int>(d.field);
-  if (ImGui::Combo("Field", &field, "None\0Young's modulus\0Density\0Displacement\0Strain energy\0Damping\0"))
+  if (ImGui::Combo("Field", &field,
+                   "None\0Young's modulus\0Density\0Displacement\0Strain energy\0Damping\0"))
     d.field = static_cast<FieldKind>(field);
   if (d.field != FieldKind::None && d.field != FieldKind::Displacement) {
     // The cell fields: smooth through node values, or flat per level-K cell.
@@ -397,9 +399,11 @@ void realTimeText(const Status& s) {
 void bottomStrip(AppModel& m, ImVec2 pos, ImVec2 size) {
   ImGui::SetNextWindowPos(pos);
   ImGui::SetNextWindowSize(size);
-  ImGui::Begin("Status", nullptr, kPanelFlags | ImGuiWindowFlags_NoTitleBar | ImGuiWindowFlags_NoScrollbar);
+  ImGui::Begin("Status", nullptr,
+               kPanelFlags | ImGuiWindowFlags_NoTitleBar | ImGuiWindowFlags_NoScrollbar);
   Requests& r = m.requests;
-  if (ImGui::Button(m.status.playing ? "Pause" : "Play", ImVec2(scaled(52), 0))) r.togglePlay = true;
+  if (ImGui::Button(m.status.playing ? "Pause" : "Play", ImVec2(scaled(52), 0)))
+    r.togglePlay = true;
   ImGui::SameLine();
   if (ImGui::Button("Step")) r.stepOnce = true;
   ImGui::SameLine();
@@ -445,12 +449,14 @@ ViewRect drawPanels(AppModel& m) {
   drawExportDialog(m);
   const ImGuiViewport* viewport = ImGui::GetMainViewport();
   ImVec2 min = viewport->WorkPos;
-  ImVec2 max(viewport->WorkPos.x + viewport->WorkSize.x, viewport->WorkPos.y + viewport->WorkSize.y);
+  ImVec2 max(viewport->WorkPos.x + viewport->WorkSize.x,
+             viewport->WorkPos.y + viewport->WorkSize.y);
   if (!m.showPanels) return {min, max};
   const float left = std::min(scaled(220), 0.3f * viewport->WorkSize.x);
   const float right = std::min(scaled(320), 0.35f * viewport->WorkSize.x);
   // Two rows: the simulation's buttons and status, then recording and the timeline.
-  const float bottom = 2 * ImGui::GetFrameHeightWithSpacing() + 2 * ImGui::GetStyle().WindowPadding.y;
+  const float bottom =
+      2 * ImGui::GetFrameHeightWithSpacing() + 2 * ImGui::GetStyle().WindowPadding.y;
   toolPanel(m, min, ImVec2(left, max.y - min.y - bottom));
   rightPanel(m, ImVec2(max.x - right, min.y), ImVec2(right, max.y - min.y - bottom));
   bottomStrip(m, ImVec2(min.x, max.y - bottom), ImVec2(max.x - min.x, bottom));
@@ -461,8 +467,9 @@ void drawBuildProgress(AppModel& m, ViewRect view) {
   const BuildStatus& build = m.status.build;
   if (!build.running) return;
   const ImVec2 size(scaled(320), 0);
-  ImGui::SetNextWindowPos(ImVec2(0.5f * (view.min.x + view.max.x), 0.5f * (view.min.y + view.max.y)),
-                          ImGuiCond_Always, ImVec2(0.5f, 0.5f));
+  ImGui::SetNextWindowPos(
+      ImVec2(0.5f * (view.min.x + view.max.x), 0.5f * (view.min.y + view.max.y)), ImGuiCond_Always,
+      ImVec2(0.5f, 0.5f));
   ImGui::SetNextWindowSize(size);
   ImGui::Begin("Preparing", nullptr,
                ImGuiWindowFlags_NoDecoration | ImGuiWindowFlags_NoSavedSettings |
@@ -482,7 +489,8 @@ void drawToasts(AppModel& m, ViewRect view) {
                                                      2.0f * ImGui::GetStyle().WindowPadding.x));
   int index = 0;
   for (const Toast& toast : m.toasts) {
-    ImGui::SetNextWindowPos(ImVec2(view.max.x - scaled(10), y), ImGuiCond_Always, ImVec2(1.0f, 0.0f));
+    ImGui::SetNextWindowPos(ImVec2(view.max.x - scaled(10), y), ImGuiCond_Always,
+                            ImVec2(1.0f, 0.0f));
     ImGui::SetNextWindowBgAlpha(0.8f);
     const std::string name = "##toast" + std::to_string(index++);
     ImGui::Begin(name.c_str(), nullptr,

@@ -40,7 +40,8 @@ void drawTimelineMarks(const RecordStatus& s, int lastFrame) {
   const ImVec2 lo = ImGui::GetItemRectMin(), hi = ImGui::GetItemRectMax();
   // ImGui's slider: 2 px padding, a grab as wide as one value (at least GrabMinSize).
   const float padding = 2.0f, travel = hi.x - lo.x - 2.0f * padding;
-  const float grab = std::max(travel / static_cast<float>(lastFrame + 1), ImGui::GetStyle().GrabMinSize);
+  const float grab =
+      std::max(travel / static_cast<float>(lastFrame + 1), ImGui::GetStyle().GrabMinSize);
   const float x0 = lo.x + padding + 0.5f * grab, usable = std::max(1.0f, travel - grab);
   const auto x = [&](double seconds) {
     const double f = std::clamp(seconds * s.takeFps / lastFrame, 0.0, 1.0);
@@ -55,8 +56,9 @@ void drawTimelineMarks(const RecordStatus& s, int lastFrame) {
   if (ImGui::IsItemHovered()) {
     std::string counts;
     for (const char* type : {"grab", "curve", "inflate", "paint", "pin"}) {
-      const auto n = std::count_if(s.marks.begin(), s.marks.end(),
-                                   [type](const TimelineMark& m) { return std::string(m.type) == type; });
+      const auto n = std::count_if(s.marks.begin(), s.marks.end(), [type](const TimelineMark& m) {
+        return std::string(m.type) == type;
+      });
       if (n > 0) counts += (counts.empty() ? "" : ", ") + std::to_string(n) + " " + type;
     }
     ImGui::SetTooltip("Strokes of the take: %s\nFile > Save take script keeps them for "
@@ -78,8 +80,12 @@ const char* const kExportFormatLabels[kExportFormatCount] = {
     "PNG frames of the view (name_0001.png, ...)",
     "H.264 video of the view (.mp4)"};
 
-ExportFormat exportFormatAt(int index) { return kFormats[static_cast<size_t>(std::clamp(index, 0, kExportFormatCount - 1))]; }
-const char* exportSuffix(int index) { return kSuffixes[static_cast<size_t>(std::clamp(index, 0, kExportFormatCount - 1))]; }
+ExportFormat exportFormatAt(int index) {
+  return kFormats[static_cast<size_t>(std::clamp(index, 0, kExportFormatCount - 1))];
+}
+const char* exportSuffix(int index) {
+  return kSuffixes[static_cast<size_t>(std::clamp(index, 0, kExportFormatCount - 1))];
+}
 
 void setExportPath(ExportDialog& dialog, const std::string& path) {
   const size_t n = std::min(path.size(), dialog.path.size() - 1);
@@ -227,10 +233,12 @@ void drawExportDialog(AppModel& m) {
                         "by more than this part of the bounding-box diagonal");
   }
   ImGui::EndDisabled();
-  ImGui::Text("%u frames at %.4g fps, about %s",
-              framesEvery(static_cast<uint32_t>(d.last - d.first + 1), static_cast<uint32_t>(d.every)),
-              m.record.takeFps / d.every, byteSize(d.estimateBytes).c_str());
-  if (!d.problem.empty()) ImGui::TextColored(ImVec4(1.0f, 0.45f, 0.4f, 1.0f), "%s", d.problem.c_str());
+  ImGui::Text(
+      "%u frames at %.4g fps, about %s",
+      framesEvery(static_cast<uint32_t>(d.last - d.first + 1), static_cast<uint32_t>(d.every)),
+      m.record.takeFps / d.every, byteSize(d.estimateBytes).c_str());
+  if (!d.problem.empty())
+    ImGui::TextColored(ImVec4(1.0f, 0.45f, 0.4f, 1.0f), "%s", d.problem.c_str());
   if (d.running) {
     ImGui::ProgressBar(static_cast<float>(d.fraction), ImVec2(scaled(420), 0));
     if (d.rendering)

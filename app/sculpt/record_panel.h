@@ -22,7 +22,8 @@ const char* exportSuffix(int index);
 int exportFormatIndex(ExportFormat format);
 /// The dialog's path field set to `path` (cut at the field's capacity).
 void setExportPath(ExportDialog& dialog, const std::string& path);
-/// `path` with its format's ending replaced by that of `index` ("a/x_take.glb" -> "a/x_take_####.obj").
+/// `path` with its format's ending replaced by that of `index` ("a/x_take.glb" ->
+/// "a/x_take_####.obj").
 std::string withExportSuffix(const std::string& path, int index);
 
 /// "1.2 MiB" and the like.

@@ -143,7 +143,8 @@ FieldRange SceneView::fieldRange(FieldKind field) const {
     const std::vector<double>& d = displacements_;
     range.low = 0.0f;
     range.high = d.empty() ? 0.0f : static_cast<float>(*std::max_element(d.begin(), d.end()));
-  } else if (const std::vector<float>* values = cellField(frame_, field); values && !values->empty()) {
+  } else if (const std::vector<float>* values = cellField(frame_, field);
+             values && !values->empty()) {
     const auto [lo, hi] = std::minmax_element(values->begin(), values->end());
     range.low = *lo, range.high = *hi;
   }
@@ -163,8 +164,9 @@ std::vector<double> SceneView::cellValues(FieldKind field) const {
 glm::vec4 SceneView::clipPlane(const DisplaySettings& display) const {
   glm::vec3 normal(0.0f);
   normal[display.clipAxis] = 1.0f;
-  const float offset = boxLow_[display.clipAxis] +
-                       display.clipPosition * (boxHigh_[display.clipAxis] - boxLow_[display.clipAxis]);
+  const float offset =
+      boxLow_[display.clipAxis] +
+      display.clipPosition * (boxHigh_[display.clipAxis] - boxLow_[display.clipAxis]);
   return glm::vec4(normal, offset);
 }
 
@@ -202,7 +204,8 @@ void SceneView::draw(const glm::mat4& view, const glm::mat4& projection,
         : smooth ? std::vector<double>(nodeField_.begin(), nodeField_.end())
                  : std::vector<double>{};
     const std::vector<double> perCell = smooth ? std::vector<double>{} : cellValues(display.field);
-    const PlaneSlice slice = slicePlane(g.cellMesh, frame_.nodes, normal, plane.w, nodeValues, perCell);
+    const PlaneSlice slice =
+        slicePlane(g.cellMesh, frame_.nodes, normal, plane.w, nodeValues, perCell);
     slice_.setSlice(slice);
     slice_.draw(view, projection, range.low, range.high);
   }
@@ -234,7 +237,8 @@ void SceneView::draw(const glm::mat4& view, const glm::mat4& projection,
                                                         kControlColour);
     std::vector<float> pointColours;
     for (Eigen::Index i = 0; i < frame_.control.rows(); ++i) {
-      const bool pinned = static_cast<size_t>(i) < g.pinned.size() && g.pinned[static_cast<size_t>(i)];
+      const bool pinned =
+          static_cast<size_t>(i) < g.pinned.size() && g.pinned[static_cast<size_t>(i)];
       const glm::vec3 c = pinned ? kPinnedColour : kControlColour;
       pointColours.insert(pointColours.end(), {c.x, c.y, c.z});
     }

@@ -93,8 +93,8 @@ SculptApp::SculptApp(GLFWwindow* window, const Options& options, Clock::time_poi
   float sx = 1.0f, sy = 1.0f;
   glfwGetWindowContentScale(window_, &sx, &sy);
   // --ui-scale for this run, else the user's saved choice, else the monitor's content scale.
-  model_.uiScale = uiScale(sx, sy, options.uiScale > 0.0f ? options.uiScale
-                                                          : static_cast<float>(preferences_.uiScale));
+  model_.uiScale = uiScale(
+      sx, sy, options.uiScale > 0.0f ? options.uiScale : static_cast<float>(preferences_.uiScale));
   applyUiScale();
   // Moving the window to a monitor of another scale re-scales the UI (unless --ui-scale is given).
   glfwSetWindowUserPointer(window_, this);
@@ -227,7 +227,8 @@ void SculptApp::syncScene() {
       controller_->loop().playScript(*std::exchange(deferredScript_, std::nullopt));
     model_.status.uploadBytes = view_.lastUploadBytes();
     model_.status.uploadMs = view_.lastUploadMs();
-    if (!latest_.lastStep.message.empty() && latest_.lastStep.message != model_.status.lastStepMessage)
+    if (!latest_.lastStep.message.empty() &&
+        latest_.lastStep.message != model_.status.lastStepMessage)
       model_.toast(latest_.lastStep.message, !latest_.lastStep.ok);
     model_.status.lastStepMessage = latest_.lastStep.message;
   }
@@ -238,7 +239,8 @@ void SculptApp::syncScene() {
   stylus_.setView(camera_);
   const double window = secondsSince(rateWindowStart_);
   if (window > 1.0) {
-    model_.status.stepsPerSecond = static_cast<double>(latest_.version - rateWindowVersion_) / window;
+    model_.status.stepsPerSecond =
+        static_cast<double>(latest_.version - rateWindowVersion_) / window;
     model_.status.realTimeFactor =
         realTimeFactor(rateWindowSimulatedTime_, latest_.simulatedTime, window);
     rateWindowVersion_ = latest_.version;
@@ -326,7 +328,8 @@ void SculptApp::handleInput(const ViewRect& view) {
   input.left = io.MouseDown[0], input.right = io.MouseDown[1], input.middle = io.MouseDown[2];
   input.modifiers = glfwModifiers(io);
   input.wheel = io.MouseWheel;
-  if (stroke_ != 0 && strokeTool_ == ToolKind::Pull && input.wheel != 0.0f && !io.WantCaptureMouse) {
+  if (stroke_ != 0 && strokeTool_ == ToolKind::Pull && input.wheel != 0.0f &&
+      !io.WantCaptureMouse) {
     // While pulling, the wheel sets the target's depth (a tenth of the distance per notch).
     grabDistance_ *= std::pow(1.1f, -input.wheel);
     input.wheel = 0.0f;
@@ -339,7 +342,8 @@ void SculptApp::handleInput(const ViewRect& view) {
   const PointerResult result = navigator_.update(input, camera_, width, height);
   if (result.cameraChanged || result.gesture != Gesture::None) sceneChanged_ = true;
   if (!brushKeyHeld && recording_->isLive()) toolStroke(result, input.x, input.y, width, height);
-  if (model_.tools.tool == ToolKind::Topology && !io.WantCaptureMouse && result.gesture == Gesture::None)
+  if (model_.tools.tool == ToolKind::Topology && !io.WantCaptureMouse &&
+      result.gesture == Gesture::None)
     hoverFace_ = pickFace(input.x, input.y, width, height);
   model_.topologySelection =
       firstFace_ ? "first face: cell " + std::to_string(firstFace_->face.cell) + ", face " +
@@ -379,8 +383,10 @@ void SculptApp::carryOutRequests() {
       if (model_.settings.cageCellsAcross != current.cageCellsAcross &&
           documentSource_.kind != SceneKind::ControlMesh) {
         // A new cage is a new control mesh: the work starts again from the surface.
-        if (document_.dirty()) model_.toast("a new cage starts a new project (the old one is autosaved)");
-        loadScene(documentSource_.kind == SceneKind::DefaultBunny ? std::string() : documentSource_.path);
+        if (document_.dirty())
+          model_.toast("a new cage starts a new project (the old one is autosaved)");
+        loadScene(documentSource_.kind == SceneKind::DefaultBunny ? std::string()
+                                                                  : documentSource_.path);
       } else if (model_.settings.needsRebuild(current)) {
         loadDocumentScene();  // the edited control mesh, materials and pins at the new level
       } else {
@@ -542,13 +548,15 @@ void SculptApp::frame(int fbWidth, int fbHeight, bool interactive) {
   ViewRect view;
   if (options_.noUi) {
     const ImGuiViewport* viewport = ImGui::GetMainViewport();
-    view = {viewport->Pos, ImVec2(viewport->Pos.x + viewport->Size.x, viewport->Pos.y + viewport->Size.y)};
+    view = {viewport->Pos,
+            ImVec2(viewport->Pos.x + viewport->Size.x, viewport->Pos.y + viewport->Size.y)};
   } else {
     view = drawPanels(model_);
     drawColourBar(model_.display.field, model_.fieldRange, view.min, view.max);
     drawBuildProgress(model_, view);
     if (model_.showStylus || stylus_.simulated()) stylus_.drawPanel(view.min, view.max);
-    if (stylus_.active() && !ImGui::GetIO().WantTextInput && ImGui::IsKeyPressed(GLFW_KEY_ESCAPE, false))
+    if (stylus_.active() && !ImGui::GetIO().WantTextInput &&
+        ImGui::IsKeyPressed(GLFW_KEY_ESCAPE, false))
       stylus_.panic();  // the panic key: the stylus' force goes to zero until re-armed
     drawToasts(model_, view);
     if (model_.showHelp) drawHelpOverlay(keys_, model_.preset, &model_.showHelp);

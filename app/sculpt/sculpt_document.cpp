@@ -171,7 +171,8 @@ void SculptApp::syncDocument() {
     pendingCapture_ = Capture::Materials;
     pendingLabel_ = "Set material";
   }
-  if (const std::string problem = document_.tick(); !problem.empty()) model_.toast(problem, true, 8.0);
+  if (const std::string problem = document_.tick(); !problem.empty())
+    model_.toast(problem, true, 8.0);
   model_.controlMeshScene = documentSource_.kind == SceneKind::ControlMesh;
   DocumentStatus& d = model_.document;
   d.title = document_.title();

@@ -24,7 +24,8 @@ std::string exportedFiles(const ExportJob::Outcome& outcome) {
 
 // The dialog's 1-based inclusive range as a take range.
 FrameRange exportRange(const ExportDialog& d) {
-  return FrameRange{static_cast<uint32_t>(d.first - 1), static_cast<uint32_t>(d.last - d.first + 1)};
+  return FrameRange{static_cast<uint32_t>(d.first - 1),
+                    static_cast<uint32_t>(d.last - d.first + 1)};
 }
 
 }  // namespace
@@ -46,7 +47,8 @@ void SculptApp::carryOutRecordRequests(const RecordRequests& r) {
   const Recording::Clock::time_point now = Recording::Clock::now();
   // A rendered export drives the playhead until it ends: the timeline waits.
   const bool rendering = rendered_.has_value();
-  if (r.toggleRecord && rendering) model_.toast("an export is rendering: wait for it or cancel it", true);
+  if (r.toggleRecord && rendering)
+    model_.toast("an export is rendering: wait for it or cancel it", true);
   if (r.toggleRecord && !rendering) {
     sceneChanged_ = true;
     if (recording_->recording()) {
@@ -91,7 +93,8 @@ void SculptApp::carryOutRecordRequests(const RecordRequests& r) {
     std::filesystem::path path(model_.exportDialog.path.data());
     path.replace_filename(path.stem().string() + "_script.json");
     try {
-      saveSessionScript(recording_->strokes().script(), path, "strokes of a take made in the window");
+      saveSessionScript(recording_->strokes().script(), path,
+                        "strokes of a take made in the window");
       model_.toast("wrote " + path.string());
     } catch (const std::exception& error) {
       model_.toast(error.what(), true, 8.0);
@@ -114,7 +117,8 @@ void SculptApp::showPlayhead() {
     return;
   }
   const uint32_t frame = recording_->playhead();
-  if (shownTake_ == take.get() && shownFrame_ == frame && shownGeometry_ == view_.geometry()) return;
+  if (shownTake_ == take.get() && shownFrame_ == frame && shownGeometry_ == view_.geometry())
+    return;
   const TakeSegment& segment = take->segments()[take->segmentOf(frame)];
   // A frame from before a rebuild shows the scene it was recorded on.
   if (view_.sharedGeometry() != segment.surface->sharedGeometry())
@@ -151,13 +155,15 @@ void SculptApp::publishRecordStatus() {
 void SculptApp::updateRecording() {
   if (recording_->recording() && recording_->full()) {
     recording_->stop();
-    model_.toast("the take is full (" + std::to_string(kMaxTakeFrames) + " frames): recording stopped");
+    model_.toast("the take is full (" + std::to_string(kMaxTakeFrames) +
+                 " frames): recording stopped");
   }
   recording_->advance(Recording::Clock::now());
   showPlayhead();
   publishRecordStatus();
 
-  if (std::optional<ExportJob::Outcome> outcome = export_->poll()) finishExport(std::move(*outcome));
+  if (std::optional<ExportJob::Outcome> outcome = export_->poll())
+    finishExport(std::move(*outcome));
   updateExportDialog();
 }
 
@@ -176,7 +182,8 @@ void SculptApp::finishExport(ExportJob::Outcome outcome) {
 }
 
 void SculptApp::renderExportFrame() {
-  if (!rendered_ || recording_->playhead() != rendered_->range.first + rendered_->next * rendered_->every)
+  if (!rendered_ ||
+      recording_->playhead() != rendered_->range.first + rendered_->next * rendered_->every)
     return;
   RenderedExport& r = *rendered_;
   ExportJob::Outcome outcome;
@@ -207,7 +214,8 @@ std::string SculptApp::defaultExportPath() const {
   // Next to the scene: <scene stem>_take.glb (the default bunny: in the working folder).
   const std::filesystem::path scene = model_.sceneFile;
   std::string stem = scene.empty() ? "bunny" : scene.stem().string();
-  if (std::filesystem::path(stem).extension() == ".sculpt") stem = std::filesystem::path(stem).stem().string();
+  if (std::filesystem::path(stem).extension() == ".sculpt")
+    stem = std::filesystem::path(stem).stem().string();
   return (scene.parent_path() / (stem + "_take")).string() + exportSuffix(0);
 }
 
@@ -215,7 +223,8 @@ void SculptApp::updateExportDialog() {
   ExportDialog& d = model_.exportDialog;
   d.running = exporting();
   d.rendering = rendered_.has_value();
-  d.fraction = rendered_ ? static_cast<double>(rendered_->next) / rendered_->count : export_->fraction();
+  d.fraction =
+      rendered_ ? static_cast<double>(rendered_->next) / rendered_->count : export_->fraction();
   const std::shared_ptr<const Take>& take = recording_->take();
   if (d.path[0] == 0) setExportPath(d, withExportSuffix(defaultExportPath(), d.format));
   if (take.get() != dialogTake_) {  // a new take: all of it

@@ -39,11 +39,12 @@ void SculptApp::reportFirstFrame() {
   firstFrameReported_ = true;
   firstFrameSeconds_ = secondsSince(started_);
   char text[160];
-  std::snprintf(text, sizeof text,
-                "first frame with the scene after %.2f s (window, OpenGL and UI ready after %.2f s, "
-                "scene data after %.2f s, GPU upload %.2f s)",
-                firstFrameSeconds_, windowReadySeconds_,
-                geometryArrivedSeconds_ - geometryUploadSeconds_, geometryUploadSeconds_);
+  std::snprintf(
+      text, sizeof text,
+      "first frame with the scene after %.2f s (window, OpenGL and UI ready after %.2f s, "
+      "scene data after %.2f s, GPU upload %.2f s)",
+      firstFrameSeconds_, windowReadySeconds_, geometryArrivedSeconds_ - geometryUploadSeconds_,
+      geometryUploadSeconds_);
   std::cout << text << std::endl;
 }
 
@@ -76,7 +77,8 @@ std::vector<uint8_t> SculptApp::captureFrame(const ScreenshotSettings& settings,
   if (panels) {
     ImDrawData* drawData = ImGui::GetDrawData();
     const ImVec2 saved = drawData->FramebufferScale;
-    drawData->FramebufferScale = ImVec2(saved.x * static_cast<float>(s), saved.y * static_cast<float>(s));
+    drawData->FramebufferScale =
+        ImVec2(saved.x * static_cast<float>(s), saved.y * static_cast<float>(s));
     glViewport(0, 0, width * s, height * s);
     ImGui_ImplOpenGL3_RenderDrawData(drawData);
     drawData->FramebufferScale = saved;
@@ -224,7 +226,8 @@ int SculptApp::runBenchmark() {
                      model_.display.method, view_.geometry()->triangles, camera_.view(),
                      camera_.projection(aspect), 15);
   const SceneGeometry& g = *view_.geometry();
-  for (const auto& [stage, ms] : controller_->buildStatus().stageMs) std::cout << "stage " << stage << ": " << ms << " ms\n";
+  for (const auto& [stage, ms] : controller_->buildStatus().stageMs)
+    std::cout << "stage " << stage << ": " << ms << " ms\n";
   std::cout << allocatorLine() << '\n';
   std::cout << "first_frame_s=" << firstFrameSeconds_ << " frames=" << options_.benchFrames
             << " size=" << width << "x" << height << " triangles=" << view_.numTriangles()

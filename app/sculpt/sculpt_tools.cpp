@@ -57,7 +57,8 @@ std::optional<SculptApp::SurfaceHit> SculptApp::surfaceHit(float x, float y, flo
     pickerScene_ = geometry.sceneId;
   }
   const Eigen::Vector3d world(hit->x, hit->y, hit->z);
-  const Eigen::Vector3d extent = geometry.restControl.colwise().maxCoeff() - geometry.restControl.colwise().minCoeff();
+  const Eigen::Vector3d extent =
+      geometry.restControl.colwise().maxCoeff() - geometry.restControl.colwise().minCoeff();
   const std::optional<Eigen::Vector3d> rest = picker_->restPoint(world, 0.1 * extent.norm());
   if (!rest) return std::nullopt;
   return SurfaceHit{*hit, *rest};
@@ -96,7 +97,8 @@ void SculptApp::toolStroke(const PointerResult& stroke, float x, float y, int wi
   }
 }
 
-ToolInput SculptApp::toolInput(const glm::vec3& world, const std::optional<Eigen::Vector3d>& rest) const {
+ToolInput SculptApp::toolInput(const glm::vec3& world,
+                               const std::optional<Eigen::Vector3d>& rest) const {
   ToolInput input;
   input.position = toEigen(world);
   input.restPoint = rest;
@@ -155,7 +157,8 @@ void SculptApp::stylusStroke(const PointerResult& stroke, float x, float y, int 
   if (stroke.strokeBegan) {
     const std::optional<SurfaceHit> hit = surfaceHit(x, y, cursorDepth_, width, height);
     if (!hit) return;
-    const float inside = stylus_.tool() == haptics::HapticTool::Pull ? 0.0f : 0.03f * view_.radius();
+    const float inside =
+        stylus_.tool() == haptics::HapticTool::Pull ? 0.0f : 0.03f * view_.radius();
     grabDistance_ = glm::dot(hit->world - origin, direction) + inside;
     stylusHeld_ = true;
   }
@@ -274,7 +277,8 @@ void SculptApp::curveStroke(const PointerResult& stroke, float x, float y, int w
     }
     return;
   }
-  if (stroke.strokeActive && (curveWorld_.empty() || std::hypot(x - lastDabX_, y - lastDabY_) >= 6.0f))
+  if (stroke.strokeActive &&
+      (curveWorld_.empty() || std::hypot(x - lastDabX_, y - lastDabY_) >= 6.0f))
     if (const std::optional<SurfaceHit> hit = surfaceHit(x, y, cursorDepth_, width, height)) {
       curveRest_.push_back(hit->rest);
       curveWorld_.push_back(hit->world);
@@ -298,8 +302,9 @@ std::optional<SculptApp::PickedFace> SculptApp::pickFace(float x, float y, int w
   for (const FaceRef& face : boundaryFacesOfScene_) {
     const std::span<const uint32_t> loop = mesh.cellFace(face.cell, face.face);
     for (size_t k = 1; k + 1 < loop.size(); ++k) {
-      const std::optional<float> t = rayTriangle(*near, direction, pointRow(control, loop[0]),
-                                                 pointRow(control, loop[k]), pointRow(control, loop[k + 1]));
+      const std::optional<float> t =
+          rayTriangle(*near, direction, pointRow(control, loop[0]), pointRow(control, loop[k]),
+                      pointRow(control, loop[k + 1]));
       if (t && *t < bestT) {
         bestT = *t;
         best = PickedFace{face, std::vector<uint32_t>(loop.begin(), loop.end())};
@@ -309,7 +314,8 @@ std::optional<SculptApp::PickedFace> SculptApp::pickFace(float x, float y, int w
   return best;
 }
 
-void SculptApp::topologyClick(const PointerResult& stroke, float x, float y, int width, int height) {
+void SculptApp::topologyClick(const PointerResult& stroke, float x, float y, int width,
+                              int height) {
   if (!stroke.strokeBegan) return;
   const std::optional<PickedFace> picked = pickFace(x, y, width, height);
   if (!picked) {
@@ -330,8 +336,8 @@ void SculptApp::topologyClick(const PointerResult& stroke, float x, float y, int
 }
 
 std::vector<FaceRef> SculptApp::withMirroredFaces(const std::vector<FaceRef>& faces) const {
-  // docs/design/ux.md: symmetry applies to topology tools too, inside one undo step. The image of a face is
-  // the boundary face whose centroid is the reflection of its centroid (when there is one).
+  // docs/design/ux.md: symmetry applies to topology tools too, inside one undo step. The image of a
+  // face is the boundary face whose centroid is the reflection of its centroid (when there is one).
   const ToolState& t = model_.tools;
   const CellComplex& mesh = document_.project().controlMesh;
   const auto centroid = [&mesh](const FaceRef& f) {
@@ -340,7 +346,8 @@ std::vector<FaceRef> SculptApp::withMirroredFaces(const std::vector<FaceRef>& fa
     for (const uint32_t v : loop) c += mesh.positions.row(v).transpose();
     return Eigen::Vector3d(c / static_cast<double>(loop.size()));
   };
-  const Eigen::Vector3d lo = mesh.positions.colwise().minCoeff(), hi = mesh.positions.colwise().maxCoeff();
+  const Eigen::Vector3d lo = mesh.positions.colwise().minCoeff(),
+                        hi = mesh.positions.colwise().maxCoeff();
   const Eigen::Vector3d centre = 0.5 * (lo + hi);
   const double tolerance = 1e-6 * (hi - lo).norm();
   std::vector<FaceRef> result = faces;
@@ -384,7 +391,8 @@ void SculptApp::applyTopology(const std::vector<FaceRef>& picked) {
       operation.op = model_.tools.operation == TopologyTool::Delete ? TopologyOp::Delete
                                                                      : TopologyOp::Subdivide;
       for (const FaceRef& f : faces)
-        if (std::find(operation.cells.begin(), operation.cells.end(), f.cell) == operation.cells.end())
+        if (std::find(operation.cells.begin(), operation.cells.end(), f.cell) ==
+            operation.cells.end())
           operation.cells.push_back(f.cell);
       break;
     case TopologyTool::Bridge: operation.op = TopologyOp::Bridge; break;
@@ -434,7 +442,8 @@ void SculptApp::applyTopology(const std::vector<FaceRef>& picked) {
 }
 
 bool SculptApp::brushKeys(const ImGuiIO& io, float dx) {
-  // F + drag sets the radius and Shift+F + drag the strength (docs/design/ux.md); F alone still frames.
+  // F + drag sets the radius and Shift+F + drag the strength (docs/design/ux.md); F alone still
+  // frames.
   ToolState& t = model_.tools;
   if (brushKey_ < 0) {
     if (!isBrushTool(t.tool) || !viewHasKeys_ || !ImGui::IsKeyPressed(GLFW_KEY_F, false) ||

@@ -51,10 +51,11 @@ bool StylusDevice::driveCamera(render::Camera& camera, float dt, int viewportHei
     // Rates at full deflection: half a turn per second, a viewport height per second, e^2 zoom.
     const auto& t = s.translation;
     const auto& r = s.rotation;
-    if (r[0] != 0 || r[1] != 0) camera.orbitBy(static_cast<float>(-r[1] * M_PI * dt), static_cast<float>(r[0] * M_PI * dt));
+    if (r[0] != 0 || r[1] != 0)
+      camera.orbitBy(static_cast<float>(-r[1] * M_PI * dt), static_cast<float>(r[0] * M_PI * dt));
     if (t[0] != 0 || t[1] != 0)
-      camera.pan(static_cast<float>(t[0] * viewportHeight * dt), static_cast<float>(-t[1] * viewportHeight * dt),
-                 viewportHeight);
+      camera.pan(static_cast<float>(t[0] * viewportHeight * dt),
+                 static_cast<float>(-t[1] * viewportHeight * dt), viewportHeight);
     if (t[2] != 0) camera.zoom(static_cast<float>(std::exp(-2.0 * t[2] * dt)));
     moved |= r[0] != 0 || r[1] != 0 || t[0] != 0 || t[1] != 0 || t[2] != 0;
   }
@@ -68,7 +69,8 @@ void StylusDevice::stop() {
   sceneId_ = 0;
 }
 
-void StylusDevice::attach(SimulationLoop& loop, const std::shared_ptr<const SceneGeometry>& geometry,
+void StylusDevice::attach(SimulationLoop& loop,
+                          const std::shared_ptr<const SceneGeometry>& geometry,
                           const SceneSettings& settings, bool physicsReady) {
   if (!wanted_ || !geometry || !physicsReady) {
     if (!wanted_ && session_) stop();
@@ -130,7 +132,8 @@ haptics::HapticStatus StylusDevice::status() const {
 float StylusDevice::forceFraction() const {
   if (!session_) return 0.0f;
   const haptics::HapticStatus s = session_->status();
-  return s.forceLimit > 0 ? static_cast<float>(std::clamp(s.force.norm() / s.forceLimit, 0.0, 1.0)) : 0.0f;
+  return s.forceLimit > 0 ? static_cast<float>(std::clamp(s.force.norm() / s.forceLimit, 0.0, 1.0))
+                          : 0.0f;
 }
 
 void StylusDevice::drawPanel(ImVec2 viewMin, ImVec2 viewMax) {
@@ -167,13 +170,13 @@ void StylusDevice::drawPanel(ImVec2 viewMin, ImVec2 viewMax) {
     char label[64];
     std::snprintf(label, sizeof label, "%.2f / %.1f N", f, s.forceLimit);
     const float fraction = s.forceLimit > 0 ? static_cast<float>(f / s.forceLimit) : 0.0f;
-    ImGui::PushStyleColor(ImGuiCol_PlotHistogram,
-                          fraction > 0.8f ? ImVec4(0.9f, 0.3f, 0.2f, 1) : ImVec4(0.3f, 0.7f, 0.4f, 1));
+    ImGui::PushStyleColor(ImGuiCol_PlotHistogram, fraction > 0.8f ? ImVec4(0.9f, 0.3f, 0.2f, 1)
+                                                                  : ImVec4(0.3f, 0.7f, 0.4f, 1));
     ImGui::ProgressBar(fraction, ImVec2(-1, 0), label);
     ImGui::PopStyleColor();
     ImGui::TextWrapped("%s", s.scale.describe().c_str());
-    ImGui::Text("Servo %llu ticks, probe %.0f ms old", static_cast<unsigned long long>(s.servoTicks),
-                s.probeAge * 1e3);
+    ImGui::Text("Servo %llu ticks, probe %.0f ms old",
+                static_cast<unsigned long long>(s.servoTicks), s.probeAge * 1e3);
     if (s.tripped) {
       ImGui::TextColored(ImVec4(1, 0.4f, 0.3f, 1), "Force tripped: zero until re-armed");
       if (ImGui::Button("Re-arm")) session_->rearm();
@@ -189,7 +192,8 @@ void StylusDevice::drawPanel(ImVec2 viewMin, ImVec2 viewMax) {
     const std::vector<haptics::ManagedDevice> found = devices_->devices();
     if (found.empty()) ImGui::TextDisabled("No HID devices (SpaceMouse family or a profile)");
     for (const haptics::ManagedDevice& d : found)
-      ImGui::Text("%s (%s)%s", d.model.c_str(), d.profileName.c_str(), d.connected ? "" : ", unplugged");
+      ImGui::Text("%s (%s)%s", d.model.c_str(), d.profileName.c_str(),
+                  d.connected ? "" : ", unplugged");
   } else if (!devicesError_.empty()) {
     ImGui::TextDisabled("HID: %s", devicesError_.c_str());
   }

@@ -60,7 +60,8 @@ class StylusDevice {
   /// The device panel (an ImGui window), first placed at the upper left of the view.
   void drawPanel(ImVec2 viewMin, ImVec2 viewMax);
   /// The stylus' cursor and, when probing or painting, its brush radius, in the view.
-  void drawCursor(ImDrawList* draw, const render::Camera& camera, ImVec2 viewMin, ImVec2 viewMax) const;
+  void drawCursor(ImDrawList* draw, const render::Camera& camera, ImVec2 viewMin,
+                  ImVec2 viewMax) const;
   haptics::HapticTool tool() const { return tool_; }
   haptics::HapticStatus status() const;
 

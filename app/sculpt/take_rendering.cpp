@@ -58,8 +58,9 @@ int SculptApp::runRecording() {
       return 2;
     }
     if (*target.format == ExportFormat::Mp4 && !programOnPath("ffmpeg")) {
-      std::cerr << "error: " << out
-                << ": writing .mp4 needs the ffmpeg program (scripts/install-deps.sh installs it)\n";
+      std::cerr
+          << "error: " << out
+          << ": writing .mp4 needs the ffmpeg program (scripts/install-deps.sh installs it)\n";
       return 2;
     }
     if (*target.format == ExportFormat::PngSequence) pngs.push_back(out);
@@ -109,7 +110,8 @@ int SculptApp::runRecording() {
   try {
     for (const Output& output : outputs) {
       if (isRenderedFormat(output.format)) continue;
-      std::fprintf(stderr, "writing %s (%s)\n", output.path.c_str(), exportFormatName(output.format));
+      std::fprintf(stderr, "writing %s (%s)\n", output.path.c_str(),
+                   exportFormatName(output.format));
       ProgressReporter progress(StderrProgress(output.path.string()));
       const ExportResult result =
           exportAnimation(surface, output.path, output.format, TakeExportOptions{}, &progress);

@@ -1,7 +1,7 @@
 #pragma once
-// The sculpting tools as the left panel edits them (docs/design/ux.md "Brushes", "Material painting"), and
-// their round trip through a project's tool settings (saved with the project, never undo
-// entries).
+// The sculpting tools as the left panel edits them (docs/design/ux.md "Brushes", "Material
+// painting"), and their round trip through a project's tool settings (saved with the project, never
+// undo entries).
 //
 // Physical tools act on the running simulation and are not edits: pull/push (a spring from the
 // material point under the cursor to the cursor), inflate/deflate (pressure inside the brush

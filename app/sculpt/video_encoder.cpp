@@ -19,11 +19,12 @@ VideoEncoder::VideoEncoder(std::filesystem::path path, int width, int height, do
     throw FileError(path_.string() + ": H.264 in yuv420p needs an even width and height (got " +
                     std::to_string(width_) + "x" + std::to_string(height_) + ")");
   // ffmpeg picks the container from the name: the temporary one keeps the .mp4 ending.
-  temporary_ = path_.parent_path() / ("." + path_.stem().string() + ".partial" + path_.extension().string());
+  temporary_ =
+      path_.parent_path() / ("." + path_.stem().string() + ".partial" + path_.extension().string());
   std::ostringstream command;
   command << "ffmpeg -hide_banner -loglevel error -y -f rawvideo -pix_fmt rgba -s " << width_ << "x"
-          << height_ << " -r " << fps
-          << " -i - -c:v libx264 -pix_fmt yuv420p -movflags +faststart " << shellQuote(temporary_.string());
+          << height_ << " -r " << fps << " -i - -c:v libx264 -pix_fmt yuv420p -movflags +faststart "
+          << shellQuote(temporary_.string());
   // A dead ffmpeg must fail the write, not kill this process.
   std::signal(SIGPIPE, SIG_IGN);
   pipe_ = ::popen(command.str().c_str(), "w");

@@ -11,7 +11,8 @@ namespace sculpt {
 std::string frameRateProblem(double fps) {
   if (std::isfinite(fps) && fps > 0.0 && fps <= 1000.0) return {};
   std::ostringstream out;
-  out << "the frame rate must be more than 0 and at most 1000 frames per second (got " << fps << ")";
+  out << "the frame rate must be more than 0 and at most 1000 frames per second (got " << fps
+      << ")";
   return out.str();
 }
 

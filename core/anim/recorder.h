@@ -54,7 +54,8 @@ class Recorder {
   /// A copy of the take so far (cheap next to an export: O(frames x control points)).
   std::shared_ptr<const Take> take() const;
   /// Frame `frame`'s control points and its scene; false when there is no such frame.
-  bool frame(uint32_t frame, Points& control, std::shared_ptr<const SceneSurfaceMap>& surface) const;
+  bool frame(uint32_t frame, Points& control,
+             std::shared_ptr<const SceneSurfaceMap>& surface) const;
 
   /// The step observer (public for callers that step a scene themselves).
   void observe(const StepState& state);

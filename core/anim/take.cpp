@@ -19,7 +19,8 @@ const CellFields* Take::fieldsAt(uint32_t frame) const {
 }
 
 void Take::controlPoints(uint32_t frame, Points& control) const {
-  if (frame >= frameCount()) throw std::out_of_range("frame " + std::to_string(frame) + " is not in the take");
+  if (frame >= frameCount())
+    throw std::out_of_range("frame " + std::to_string(frame) + " is not in the take");
   const uint64_t begin = frameOffset_[frame];
   const uint64_t end = frame + 1 < frameCount() ? frameOffset_[frame + 1] : control_.size();
   const Eigen::Index rows = static_cast<Eigen::Index>((end - begin) / 3);

@@ -16,7 +16,8 @@
 namespace sculpt {
 
 struct TakeSegment {
-  std::shared_ptr<const SceneSurfaceMap> surface;  ///< the scene's geometry and control-to-nodes map
+  std::shared_ptr<const SceneSurfaceMap>
+      surface;  ///< the scene's geometry and control-to-nodes map
   FrameRange frames;
 };
 

@@ -24,7 +24,8 @@ TakeSurface::TakeSurface(std::shared_ptr<const Take> take, FrameRange range, uin
   const uint32_t end = range_.first + range_.count;
   for (const TakeSegment& s : take_->segments()) {
     const uint32_t first = shownFrom(std::max(s.frames.first, range_.first));
-    const uint32_t last = shownFrom(std::max(std::min(s.frames.first + s.frames.count, end), range_.first));
+    const uint32_t last =
+        shownFrom(std::max(std::min(s.frames.first + s.frames.count, end), range_.first));
     if (first >= last) continue;
     Segment segment;
     segment.surface = s.surface;
@@ -33,7 +34,8 @@ TakeSurface::TakeSurface(std::shared_ptr<const Take> take, FrameRange range, uin
     if (!g.surface) throw std::logic_error("the recorded scene has no surface");
     segment.restNormals.resize(3 * static_cast<size_t>(g.restNormals.rows()));
     for (Eigen::Index v = 0; v < g.restNormals.rows(); ++v)
-      for (int d = 0; d < 3; ++d) segment.restNormals[3 * v + d] = static_cast<float>(g.restNormals(v, d));
+      for (int d = 0; d < 3; ++d)
+        segment.restNormals[3 * v + d] = static_cast<float>(g.restNormals(v, d));
     if (g.surface->normals.rows() > 0) segment.normalAnchors = normalAnchors(*g.surface);
     segment.vertexAnchors.resize(g.restPositions.rows());
     for (uint32_t v = 0; v < segment.vertexAnchors.size(); ++v) segment.vertexAnchors[v] = v;
@@ -64,7 +66,8 @@ uint32_t TakeSurface::maxVertices() const {
 }
 
 const TakeSurface::Segment& TakeSurface::segmentFor(uint32_t frame) const {
-  if (frame >= frames_) throw std::out_of_range("frame " + std::to_string(frame) + " is not in the take");
+  if (frame >= frames_)
+    throw std::out_of_range("frame " + std::to_string(frame) + " is not in the take");
   return segments_[segmentOf(frame)];
 }
 

@@ -103,7 +103,8 @@ Eigen::Vector3d cellLocalCoordinates(const VolumeMesh& mesh, uint32_t cell,
     const Eigen::Vector3d xi0 =
         start < 8 ? Eigen::Vector3d(kTrilinearCorner[start][0], kTrilinearCorner[start][1],
                                     kTrilinearCorner[start][2])
-                  : Eigen::Vector3d::Constant(0.5) + (start - 6) * (stalled - Eigen::Vector3d::Constant(0.5));
+                  : Eigen::Vector3d::Constant(0.5) +
+                        (start - 6) * (stalled - Eigen::Vector3d::Constant(0.5));
     const auto [xi, residual] = newton(xi0);
     if (residual < bestResidual) best = xi, bestResidual = residual;
   }

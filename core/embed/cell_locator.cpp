@@ -37,7 +37,8 @@ CellLocator::CellLocator(const VolumeMesh& mesh) : mesh_(mesh) {
   // candidate test a 3x3 product.
   tetInverse_.assign(n, Eigen::Matrix3d::Identity());
   for (uint32_t c = 0; c < n; ++c)
-    if (mesh.isTetrahedron(c)) tetInverse_[c] = cellJacobian(mesh, c, Eigen::Vector3d::Zero()).inverse();
+    if (mesh.isTetrahedron(c))
+      tetInverse_[c] = cellJacobian(mesh, c, Eigen::Vector3d::Zero()).inverse();
   order_.resize(n);
   for (uint32_t c = 0; c < n; ++c) order_[c] = c;
   nodes_.reserve(2 * (n / kLeafSize + 1));

@@ -36,7 +36,8 @@ CellGradientOperator cellGradientOperator(const VolumeMesh& rest) {
 }
 
 void computeCellGradients(const VolumeMesh& rest, const CellGradientOperator& op,
-                          const Points& deformedNodes, std::vector<Eigen::Matrix3d>& cellGradients) {
+                          const Points& deformedNodes,
+                          std::vector<Eigen::Matrix3d>& cellGradients) {
   cellGradients.resize(rest.numCells());
   parallelChunks(rest.numCells(), 2048, [&](uint32_t begin, uint32_t end, unsigned) {
     for (uint32_t c = begin; c < end; ++c) {

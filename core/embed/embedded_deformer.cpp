@@ -369,7 +369,8 @@ Points EmbeddedDeformer::positionsSinglePrecision() const {
   sorted.resize(n);
   evaluateSorted(sorted.x.data(), sorted.y.data(), sorted.z.data());
   Points out(n, 3);
-  for (uint32_t k = 0; k < n; ++k) out.row(sortedToInput_[k]) << sorted.x[k], sorted.y[k], sorted.z[k];
+  for (uint32_t k = 0; k < n; ++k)
+    out.row(sortedToInput_[k]) << sorted.x[k], sorted.y[k], sorted.z[k];
   return out;
 }
 
@@ -385,7 +386,8 @@ Eigen::Matrix3d EmbeddedDeformer::gradientAt(uint32_t point) const {
 Points EmbeddedDeformer::deformNormals(const Points& restNormals,
                                        std::span<const uint32_t> anchors) const {
   Points out = restNormals;
-  const uint32_t count = static_cast<uint32_t>(std::min<size_t>(anchors.size(), restNormals.rows()));
+  const uint32_t count =
+      static_cast<uint32_t>(std::min<size_t>(anchors.size(), restNormals.rows()));
   parallelChunks(count, 4096, [&](uint32_t begin, uint32_t end, unsigned) {
     for (uint32_t j = begin; j < end; ++j) {
       if (anchors[j] >= numPoints()) continue;

@@ -4,9 +4,9 @@
 // Precomputed once (double precision): the embedding, the node-gradient stencil
 // (gradient_scheme.h), the points sorted by cell in structure-of-arrays form and, for the
 // attribute method, each point's metaball neighbours.
-// Per frame: setFrame() computes node gradients through the stencil and turns each cell's interpolant into a
-// small polynomial (O(nodes + cells)); evaluate*() then costs a few dozen multiply-adds per point
-// (O(points), single precision on the fast path, both cores).
+// Per frame: setFrame() computes node gradients through the stencil and turns each cell's
+// interpolant into a small polynomial (O(nodes + cells)); evaluate*() then costs a few dozen
+// multiply-adds per point (O(points), single precision on the fast path, both cores).
 //
 // The per-cell polynomial: with X(xi) = sum_b beta_b X_b the interpolant
 //   f = sum_a beta_a x_a + alpha sum_{a<b} beta_a beta_b (F_a - F_b)(X_b - X_a)

@@ -57,7 +57,8 @@ ConvergenceSeries runConvergenceStudy(StudyCells cells, StudyPlacement placement
   std::mt19937 random(2020);
   std::uniform_real_distribution<double> uniform(0.05, 0.95);
   std::vector<Eigen::Vector3d> unitPositions(25);
-  for (auto& q : unitPositions) q = Eigen::Vector3d(uniform(random), uniform(random), uniform(random));
+  for (auto& q : unitPositions)
+    q = Eigen::Vector3d(uniform(random), uniform(random), uniform(random));
 
   ConvergenceSeries series;
   series.cells = cells;
@@ -141,7 +142,8 @@ std::vector<KelvinletRow> runKelvinletStudy(std::span<const double> spacingOverE
     spec.origin = Eigen::Vector3d::Constant(-2.0);
     VolumeMesh mesh = tetLattice(spec);
     if (jittered) jitterLattice(mesh, spec, 0.15, 99);
-    for (KelvinletBrush brush : {KelvinletBrush::Grab, KelvinletBrush::Twist, KelvinletBrush::Pinch}) {
+    for (KelvinletBrush brush :
+         {KelvinletBrush::Grab, KelvinletBrush::Twist, KelvinletBrush::Pinch}) {
       // Displacements are linear in the amplitude: scale the unit brush to max |u| = eps / 4.
       const RegularizedKelvinlet unit = makeBrush(brush, 1.0);
       double largest = 0.0;

@@ -47,9 +47,11 @@ SolidCellMesh solidCellMesh(const CellComplex& complex, const Topology& topology
       const auto face = complex.cellFace(c, j);
       // Fan from the smallest vertex id: a neighbour split the same way cuts the face alike.
       const size_t n = face.size();
-      const size_t first = static_cast<size_t>(std::min_element(face.begin(), face.end()) - face.begin());
+      const size_t first =
+          static_cast<size_t>(std::min_element(face.begin(), face.end()) - face.begin());
       for (size_t k = 1; k + 1 < n; ++k)
-        addPositiveTetrahedron(solid.mesh, {face[first], face[(first + k) % n], face[(first + k + 1) % n], centre});
+        addPositiveTetrahedron(
+            solid.mesh, {face[first], face[(first + k) % n], face[(first + k + 1) % n], centre});
     }
   }
   return solid;

@@ -71,7 +71,8 @@ ElasticKernel::ElasticKernel(const FemMesh& mesh)
   meshNode_.clear();
   meshNode_.reserve(numNodes);
   elementNodes_.clear();
-  elementNodes_.reserve(size_t(numTricubic) * kTricubicNodes + size_t(mesh.numLinear()) * kLinearNodes);
+  elementNodes_.reserve(size_t(numTricubic) * kTricubicNodes +
+                        size_t(mesh.numLinear()) * kLinearNodes);
   auto number = [&](uint32_t node) {
     if (kernelNode[node] == kUnseen) {
       kernelNode[node] = uint32_t(meshNode_.size());
@@ -98,7 +99,8 @@ ElasticKernel::ElasticKernel(const FemMesh& mesh)
     for (int q = 0; q < 8; ++q) {
       const LinearShapeGradient& dN = mesh.linearShapeGradient[size_t(l) * 8 + q];
       for (int a = 0; a < 8; ++a)
-        for (int c = 0; c < 3; ++c) linearShapeGradient_[size_t(l) * 192 + (a * 3 + c) * 8 + q] = dN(a, c);
+        for (int c = 0; c < 3; ++c)
+          linearShapeGradient_[size_t(l) * 192 + (a * 3 + c) * 8 + q] = dN(a, c);
     }
   refreshMaterial();
 }
@@ -392,8 +394,9 @@ double ElasticKernel::run(const Points& x, Mode mode, Points* out, bool withEner
                             tricubic ? 4 : 8, volumeLambda, volumeMu, *barrier);
           BarrierRecord& record = (*records)[worker];
           record.elements.push_back(e);
-          record.states.insert(record.states.end(), barrierRecord,
-                               barrierRecord + 9 * (tricubic ? kTricubicGaussPoints : kLinearGaussPoints));
+          record.states.insert(
+              record.states.end(), barrierRecord,
+              barrierRecord + 9 * (tricubic ? kTricubicGaussPoints : kLinearGaussPoints));
         }
         if (!sink) continue;
         scatterAddNodeRows(ge, elementNodes(e), int(count), *sink);

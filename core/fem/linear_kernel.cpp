@@ -13,7 +13,8 @@ double linearElementKernel(const double* u, const LinearPacked& element, const E
       ul[a][r] = R(0, r) * u[a] + R(1, r) * u[8 + a] + R(2, r) * u[16 + a];
   V8 dN[8][3];
   for (int a = 0; a < 8; ++a)
-    for (int c = 0; c < 3; ++c) dN[a][c] = Eigen::Map<const V8>(element.shapeGradient + (a * 3 + c) * 8);
+    for (int c = 0; c < 3; ++c)
+      dN[a][c] = Eigen::Map<const V8>(element.shapeGradient + (a * 3 + c) * 8);
   // M = R^T F at every Gauss point.
   V8 M[3][3];
   for (int r = 0; r < 3; ++r)

@@ -79,7 +79,8 @@ void polarRotations(const Eigen::Matrix3d* F, const Eigen::Matrix3d* guess, int 
   for (int iteration = 0; iteration < 4 && anyRunning(); ++iteration) {
     V4 m[3][3];
     for (int i = 0; i < 3; ++i)
-      for (int j = 0; j < 3; ++j) m[i][j] = r[0][i] * f[0][j] + r[1][i] * f[1][j] + r[2][i] * f[2][j];
+      for (int j = 0; j < 3; ++j)
+        m[i][j] = r[0][i] * f[0][j] + r[1][i] * f[1][j] + r[2][i] * f[2][j];
     const V4 trace = m[0][0] + m[1][1] + m[2][2];
     const V4 sx = m[2][1] - m[1][2], sy = m[0][2] - m[2][0], sz = m[1][0] - m[0][1];
     // A = tr(M) I - M by its adjugate (rows of cofactors).
@@ -108,7 +109,8 @@ void polarRotations(const Eigen::Matrix3d* F, const Eigen::Matrix3d* guess, int 
                         {s * (vz * vx - vy), s * (vz * vy + vx), 1.0 + s * (vz * vz - vv)}};
     V4 next[3][3];
     for (int i = 0; i < 3; ++i)
-      for (int j = 0; j < 3; ++j) next[i][j] = r[i][0] * q[0][j] + r[i][1] * q[1][j] + r[i][2] * q[2][j];
+      for (int j = 0; j < 3; ++j)
+        next[i][j] = r[i][0] * q[0][j] + r[i][1] * q[1][j] + r[i][2] * q[2][j];
     for (int l = 0; l < count; ++l) {
       if (lane[l] != Lane::Running) continue;
       // Near the polar rotation A is about tr(S) I - S, positive definite for an SPD stretch

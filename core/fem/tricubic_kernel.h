@@ -1,8 +1,8 @@
 #pragma once
-// The matrix-free tricubic B-spline element (docs/design/local-frame-fem.md, "Making it fast"): parametric
-// gradients at the 4x4x4 Gauss points by sum factorisation (three successive 4x4 contractions),
-// co-rotated linear stress, and the transposed contractions back onto the 64 nodes. Gauss points
-// are processed four at a time (the k direction) so that the compiler can vectorise.
+// The matrix-free tricubic B-spline element (docs/design/local-frame-fem.md, "Making it fast"):
+// parametric gradients at the 4x4x4 Gauss points by sum factorisation (three successive 4x4
+// contractions), co-rotated linear stress, and the transposed contractions back onto the 64 nodes.
+// Gauss points are processed four at a time (the k direction) so that the compiler can vectorise.
 
 #include <Eigen/Core>
 #include <cstdint>

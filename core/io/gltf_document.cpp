@@ -205,8 +205,9 @@ tinygltf::Model loadModel(const std::filesystem::path& path) {
   const bool binary = bytes.size() >= 4 && bytes.compare(0, 4, "glTF") == 0;
   const size_t length = binary ? checkGlbLayout(path, bytes) : bytes.size();
   // tinygltf's JSON parser recurses once per level: a hostile file could overflow the stack.
-  const std::string_view json = binary ? std::string_view(bytes).substr(20, readLittleEndian32(bytes, 12))
-                                       : std::string_view(bytes);
+  const std::string_view json =
+      binary ? std::string_view(bytes).substr(20, readLittleEndian32(bytes, 12))
+             : std::string_view(bytes);
   if (const size_t at = excessiveJsonNesting(json, kMaxJsonNesting); at != std::string_view::npos)
     fail(path, "",
          "not valid glTF (its JSON nests deeper than " + std::to_string(kMaxJsonNesting) +

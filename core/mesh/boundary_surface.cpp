@@ -40,7 +40,8 @@ BoundarySurface boundarySurface(const CellComplex& complex, const Topology& topo
       out.creases.push_back({surfaceIndex[a], surfaceIndex[b]});
   }
   for (uint32_t v : complex.corners)
-    if (v < surfaceIndex.size() && surfaceIndex[v] != kUnused) out.corners.push_back(surfaceIndex[v]);
+    if (v < surfaceIndex.size() && surfaceIndex[v] != kUnused)
+      out.corners.push_back(surfaceIndex[v]);
   return out;
 }
 

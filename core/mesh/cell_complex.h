@@ -15,8 +15,8 @@ namespace sculpt {
 /// #V by 3 matrix of positions, one row per vertex (row-major so a row is one xyz triple).
 using Points = Eigen::Matrix<double, Eigen::Dynamic, 3, Eigen::RowMajor>;
 
-/// Cells stored in compressed rows: cell c owns the face loops cellFaceBegin[c] .. cellFaceBegin[c+1]-1,
-/// and face loop i owns loopVertices[loopBegin[i] .. loopBegin[i+1]-1].
+/// Cells stored in compressed rows: cell c owns the face loops cellFaceBegin[c] ..
+/// cellFaceBegin[c+1]-1, and face loop i owns loopVertices[loopBegin[i] .. loopBegin[i+1]-1].
 struct CellComplex {
   Points positions;                          ///< #V by 3 (metres)
   std::vector<uint32_t> cellFaceBegin{0};    ///< #C+1 offsets into the face-loop list

@@ -40,7 +40,8 @@ std::vector<uint32_t> groupLoopsIntoFaces(const CellComplex& complex, uint32_t& 
   const uint32_t numLoops = static_cast<uint32_t>(complex.loopBegin.size() - 1);
   std::vector<uint32_t> sortedIds(complex.loopVertices);
   for (uint32_t l = 0; l < numLoops; ++l)
-    std::sort(sortedIds.begin() + complex.loopBegin[l], sortedIds.begin() + complex.loopBegin[l + 1]);
+    std::sort(sortedIds.begin() + complex.loopBegin[l],
+              sortedIds.begin() + complex.loopBegin[l + 1]);
   auto key = [&](uint32_t l) {
     return std::span<const uint32_t>(sortedIds.data() + complex.loopBegin[l],
                                      complex.loopBegin[l + 1] - complex.loopBegin[l]);

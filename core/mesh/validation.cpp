@@ -174,8 +174,9 @@ void checkTags(const CellComplex& mesh, const Topology& t, std::vector<Validatio
   for (const auto& crease : mesh.creases) {
     const int64_t e = t.findEdge(crease[0], crease[1]);
     if (e < 0)
-      issues.push_back({Kind::BadTag, Severity::Error, Element::Edge, crease[0],
-                        "crease " + edgeName(crease[0], crease[1]) + " is not an edge of the mesh"});
+      issues.push_back(
+          {Kind::BadTag, Severity::Error, Element::Edge, crease[0],
+           "crease " + edgeName(crease[0], crease[1]) + " is not an edge of the mesh"});
     else if (!t.edgeIsBoundary[size_t(e)])
       issues.push_back({Kind::BadTag, Severity::Error, Element::Edge, crease[0],
                         "crease " + edgeName(crease[0], crease[1]) +

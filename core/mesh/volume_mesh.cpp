@@ -201,7 +201,8 @@ std::string findFoldedFace(const VolumeMesh& mesh) {
     for (int f = 0; f < (tet ? 4 : 6); ++f) {
       Key key{UINT32_MAX, UINT32_MAX, UINT32_MAX, UINT32_MAX};
       for (int k = 0; k < (tet ? 3 : 4); ++k)
-        key[static_cast<size_t>(k)] = nodes[static_cast<size_t>(tet ? kTetFaces[f][k] : kHexFaces[f][k])];
+        key[static_cast<size_t>(k)] =
+            nodes[static_cast<size_t>(tet ? kTetFaces[f][k] : kHexFaces[f][k])];
       std::sort(key.begin(), key.end());
       faces.emplace_back(key, cell);
     }

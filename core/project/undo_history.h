@@ -9,9 +9,9 @@
 //     same set of points, else the whole sample set before and after (it was resampled);
 //   - pins: the pins added and the pins removed;
 //   - the embedded surface: before and after.
-// Camera, tool settings and simulation settings are not edits and are never touched (docs/design/ux.md:
-// "tool settings are not undo entries"; simulation playback is separate from edit history).
-// The history is bounded by a step count and by bytes; the oldest entries go first.
+// Camera, tool settings and simulation settings are not edits and are never touched
+// (docs/design/ux.md: "tool settings are not undo entries"; simulation playback is separate from
+// edit history). The history is bounded by a step count and by bytes; the oldest entries go first.
 
 #include <cstddef>
 #include <deque>

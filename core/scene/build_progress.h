@@ -37,7 +37,8 @@ class StageClock {
   explicit StageClock(StageTimes& out) : out_(out), start_(Clock::now()) {}
   void lap(std::string name) {
     const Clock::time_point now = Clock::now();
-    out_.emplace_back(std::move(name), std::chrono::duration<double, std::milli>(now - start_).count());
+    out_.emplace_back(std::move(name),
+                      std::chrono::duration<double, std::milli>(now - start_).count());
     start_ = now;
   }
 

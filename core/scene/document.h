@@ -3,10 +3,10 @@
 // belongs to, whether it has unsaved changes, its undo history and autosave. No GL, no threads:
 // the window calls it from the UI thread and tests drive it directly.
 //
-// Edits go through commit(label, after): one undo entry per stroke or operation (docs/design/ux.md "Undo").
-// Dirty tracking: every state the undo history can reach has an id; the document is dirty when
-// the id of the state shown is not the id of the state last saved (so undoing back to the saved
-// state is clean again, as in Blender).
+// Edits go through commit(label, after): one undo entry per stroke or operation (docs/design/ux.md
+// "Undo"). Dirty tracking: every state the undo history can reach has an id; the document is dirty
+// when the id of the state shown is not the id of the state last saved (so undoing back to the
+// saved state is clean again, as in Blender).
 
 #include <cstdint>
 #include <deque>
@@ -23,7 +23,8 @@ namespace sculpt {
 class Document {
  public:
   /// `recoveryDirectory`: where an untitled project autosaves ("untitled.sculpt.recovery").
-  Document(std::filesystem::path recoveryDirectory, double autosaveIntervalS, Autosave::Clock clock);
+  Document(std::filesystem::path recoveryDirectory, double autosaveIntervalS,
+           Autosave::Clock clock);
 
   const Project& project() const { return project_; }
   const std::filesystem::path& path() const { return path_; }  ///< empty: untitled

@@ -43,7 +43,8 @@ SurfaceMesh readSurface(const std::string& path) {
   return readSurfaceFile(path).surface();  // FileError names the file
 }
 
-Cage cageAround(const SurfaceMesh& surface, const SceneSettings& settings, const std::string& path) {
+Cage cageAround(const SurfaceMesh& surface, const SceneSettings& settings,
+                const std::string& path) {
   const Eigen::Vector3d extent =
       (surface.positions.colwise().maxCoeff() - surface.positions.colwise().minCoeff()).transpose();
   CageSettings cageSettings;
@@ -134,7 +135,8 @@ std::string sceneSettingsProblem(const SceneSettings& s) {
   if (s.level < 1 || s.level > 3)
     return "the simulation level must be 1, 2 or 3 (got " + std::to_string(s.level) + ")";
   if (!(s.cageCellsAcross >= 1.0 && s.cageCellsAcross <= 64.0))
-    return "the cage must have 1 to 64 cells across (got " + std::to_string(s.cageCellsAcross) + ")";
+    return "the cage must have 1 to 64 cells across (got " + std::to_string(s.cageCellsAcross) +
+           ")";
   if (s.renderLevel < 0 || s.renderLevel > 5)
     return "the render level must be in 0..5 (got " + std::to_string(s.renderLevel) + ")";
   if (const std::string problem = materialProblem(s.material); !problem.empty())
@@ -219,10 +221,12 @@ std::optional<SceneSolidPart> buildSolidPart(const SceneSource& source,
   if (!refineSolid.start()) return std::nullopt;
   // Phase 2 builds the elements and the solver on these cells: refuse before either phase
   // allocates when the whole would not fit.
-  if (const std::string refusal = refinementRefusal(topology, settings.level, sourceName, kSimulation);
+  if (const std::string refusal =
+          refinementRefusal(topology, settings.level, sourceName, kSimulation);
       !refusal.empty())
     throw std::runtime_error(refusal);
-  std::optional<Subdivision> subdivision = subdivide(control, settings.level, refineSolid.reporter());
+  std::optional<Subdivision> subdivision =
+      subdivide(control, settings.level, refineSolid.reporter());
   if (!subdivision) return std::nullopt;
   clock.lap("subdivide");
   BuildStage cells(progress, 0.03, 0.04, "cells");

@@ -110,7 +110,8 @@ void storeSceneSettings(const SceneSettings& settings, Project& project) {
   project.tools["scene.cageCellsAcross"] = settings.cageCellsAcross;
   project.tools["scene.renderLevel"] = static_cast<double>(settings.renderLevel);
   project.tools["scene.elasticModel"] = std::string(elasticModelName(settings.elasticModel));
-  project.simulation.integrator = settings.integrator == Integrator::Paper ? "paper" : "implicit-euler";
+  project.simulation.integrator =
+      settings.integrator == Integrator::Paper ? "paper" : "implicit-euler";
   project.simulation.timeStepS = settings.timeStep;
   project.simulation.gravity = settings.gravity;
   project.simulation.level = settings.level;

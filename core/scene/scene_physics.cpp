@@ -71,8 +71,8 @@ std::unique_ptr<ScenePhysics> ScenePhysics::build(std::shared_ptr<const SceneGeo
   const FemMesh& mesh = physics->model_->mesh();
   // The element plan of phase 1 must be the FEM's.
   const ElementCounts counts = mesh.counts();
-  bool planMatches = counts.tricubic == g.elementCounts[0] && counts.trilinear == g.elementCounts[1] &&
-                     counts.pyramid == g.elementCounts[2];
+  bool planMatches = counts.tricubic == g.elementCounts[0] &&
+                     counts.trilinear == g.elementCounts[1] && counts.pyramid == g.elementCounts[2];
   for (size_t c = 0; planMatches && c < g.cellElement.size(); ++c)
     planMatches = g.cellElement[c] < mesh.numElements() &&
                   static_cast<uint8_t>(mesh.elementType[g.cellElement[c]]) == g.cellKind[c];
@@ -97,11 +97,13 @@ std::unique_ptr<ScenePhysics> ScenePhysics::build(std::shared_ptr<const SceneGeo
     if (g.pinned[v]) physics->simulator_->setFixed(v, true);
   physics->setGravity(settings.gravity);
   physics->applied_ = settings;
-  if (const Project* project = physics->solid_->project.get(); project && project->materials.size()) {
+  if (const Project* project = physics->solid_->project.get();
+      project && project->materials.size()) {
     // The painted materials of the project, by position (exact when the level is the same).
     const std::string problem =
         physics->restoreEdits(project->materials, project->pins, settings.material);
-    if (!problem.empty()) throw std::runtime_error("cannot restore the painted materials: " + problem);
+    if (!problem.empty())
+      throw std::runtime_error("cannot restore the painted materials: " + problem);
   }
   physics->updateMaterialFields();
   clock.lap("simulator");

@@ -86,7 +86,9 @@ class ScenePhysics : private ToolContext {
   /// progress; reset() ends it. Throws std::invalid_argument when a grab point cannot be located.
   void playScript(const SessionScript& script);
   /// The script's log lines since the last call ("events[0] (grab) started ..."); none without one.
-  std::vector<std::string> takeScriptLog() { return player_ ? player_->takeLog() : std::vector<std::string>{}; }
+  std::vector<std::string> takeScriptLog() {
+    return player_ ? player_->takeLog() : std::vector<std::string>{};
+  }
   /// Strokes of any tool (tools/tool.h), named by the caller's id: begin throws
   /// std::invalid_argument with a sentence when the stroke cannot start (nothing changes then);
   /// update and end of an unknown id (ended, or dropped by reset()) do nothing. A tool that

@@ -196,7 +196,8 @@ void SimulationLoop::setStrainEnergyShown(bool shown) {
 
 void SimulationLoop::restoreEdits(MaterialSamples samples, std::vector<uint32_t> pins) {
   Command command;
-  command.other = [this, samples = std::move(samples), pins = std::move(pins)](ScenePhysics& physics) {
+  command.other = [this, samples = std::move(samples),
+                   pins = std::move(pins)](ScenePhysics& physics) {
     Material uniform;
     {
       const std::lock_guard lock(mutex_);
@@ -230,7 +231,8 @@ std::optional<SceneEdits> SimulationLoop::takeEdits() {
 
 uint64_t SimulationLoop::addStepObserver(StepObserver observer) {
   const std::lock_guard lock(mutex_);
-  observers_.emplace_back(++nextObserver_, std::make_shared<const StepObserver>(std::move(observer)));
+  observers_.emplace_back(++nextObserver_,
+                          std::make_shared<const StepObserver>(std::move(observer)));
   return nextObserver_;
 }
 

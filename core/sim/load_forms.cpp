@@ -35,7 +35,8 @@ void checkPoint(const FemModel& model, const MaterialPoint& point, const char* f
 }
 
 void checkVector(const Eigen::Vector3d& v, const char* form, const char* what) {
-  if (!v.allFinite()) reject(std::string(form) + ": the " + what + " " + text(v) + " is not finite.");
+  if (!v.allFinite())
+    reject(std::string(form) + ": the " + what + " " + text(v) + " is not finite.");
 }
 
 void checkStiffness(double k, const char* form, const char* unit) {
@@ -150,7 +151,8 @@ std::vector<std::array<uint32_t, 3>> boundaryTriangles(const FemModel& model,
       centroid /= static_cast<double>(loop.size());
       if ((centroid - region.centre).norm() > region.radius) continue;
     }
-    for (size_t i = 1; i + 1 < loop.size(); ++i) triangles.push_back({loop[0], loop[i], loop[i + 1]});
+    for (size_t i = 1; i + 1 < loop.size(); ++i)
+      triangles.push_back({loop[0], loop[i], loop[i + 1]});
   }
   return triangles;
 }

@@ -1,7 +1,7 @@
 #pragma once
-// External loads as forms (docs/design/local-frame-fem.md "Loads and constraints"): a force at any material
-// point, a penalty spring from a material point to a target (mouse or stylus pull), pressure on
-// the boundary (inflate, deflate) and penalty contact with a ground half-space.
+// External loads as forms (docs/design/local-frame-fem.md "Loads and constraints"): a force at any
+// material point, a penalty spring from a material point to a target (mouse or stylus pull),
+// pressure on the boundary (inflate, deflate) and penalty contact with a ground half-space.
 //
 // Every constructor and setter checks its inputs and throws std::invalid_argument with a sentence
 // naming the bad value. A form keeps a reference to its model: the model must outlive it and must

@@ -54,10 +54,11 @@ class MaterialPointLocator {
 
   /// The material point at rest position X. Candidates are the elements whose box contains X
   /// (from the grid), nearest box centre first; each is inverted by Newton's method and the
-  /// first whose inverse lies in [0,1]^3 is returned. A point in no element (outside the solid, or in a
-  /// gap between non-conforming elements) snaps to the nearest element, with local coordinates
+  /// first whose inverse lies in [0,1]^3 is returned. A point in no element (outside the solid, or
+  /// in a gap between non-conforming elements) snaps to the nearest element, with local coordinates
   /// of the nearest point of that element (a Gauss-Newton search confined to [0,1]^3), found by
-  /// branch and bound over the boxes sorted by distance. nullopt only for an empty mesh or a non-finite X.
+  /// branch and bound over the boxes sorted by distance. nullopt only for an empty mesh or a
+  /// non-finite X.
   std::optional<MaterialPoint> locate(const Eigen::Vector3d& restPosition) const;
 
   /// Distance from the rest position to the returned point's rest position is below this (in

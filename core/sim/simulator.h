@@ -1,5 +1,6 @@
 #pragma once
-// Time integration and static equilibrium of a FemModel (docs/design/local-frame-fem.md, "Integrators"):
+// Time integration and static equilibrium of a FemModel (docs/design/local-frame-fem.md,
+// "Integrators"):
 //  - Paper: eq. 20, central differences with the elastic force at time t; the constant matrix
 //    2M~ + dt D~ is solved by Jacobi-preconditioned CG warm-started from the previous step, to a
 //    relative residual of 1e-4. We solve for the increment over the extrapolation 2p(t) - p(t-dt)

@@ -96,7 +96,9 @@ class ControlForceForm : public Form {
   explicit ControlForceForm(Points forces) : forces_(std::move(forces)) {}
   std::string name() const override { return "control forces"; }
   const Points& forces() const { return forces_; }
-  double energy(const FormState& x) const override { return -x.control.cwiseProduct(forces_).sum(); }
+  double energy(const FormState& x) const override {
+    return -x.control.cwiseProduct(forces_).sum();
+  }
   void addGradient(const FormState&, FormGradient& g) const override { g.control -= forces_; }
   void addHessianProduct(const FormState&, const FormState&, FormGradient&) const override {}
 

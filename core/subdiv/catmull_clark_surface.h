@@ -1,7 +1,8 @@
 #pragma once
 // Catmull–Clark subdivision of a polygon surface (OpenSubdiv's Far API, SCHEME_CATMARK): the
 // window refines the boundary surface of a control mesh to a render level and embeds it in the
-// subdivided solid, whose boundary follows the same Catmull–Clark rules (docs/design/mj-subdivision.md).
+// subdivided solid, whose boundary follows the same Catmull–Clark rules
+// (docs/design/mj-subdivision.md).
 
 #include "mesh/surface_mesh.h"
 #include "subdiv/surface_refiner.h"

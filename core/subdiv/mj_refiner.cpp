@@ -11,7 +11,8 @@ namespace {
 // Accumulates one stencil row over old vertices with a dense scratch array (one per worker).
 class RowBuilder {
  public:
-  explicit RowBuilder(const Topology& t) : t_(t), weights_(t.numVertices, 0.0), touched_(t.numVertices, 0) {}
+  explicit RowBuilder(const Topology& t)
+      : t_(t), weights_(t.numVertices, 0.0), touched_(t.numVertices, 0) {}
 
   void add(uint32_t v, double w) {
     if (!touched_[v]) {

@@ -1,6 +1,6 @@
 #pragma once
-// MacCracken–Joy refinement of a cell complex (docs/design/mj-subdivision.md): interior rules from old
-// positions, Catmull–Clark rules on the boundary surface, crease and corner tags inherited.
+// MacCracken–Joy refinement of a cell complex (docs/design/mj-subdivision.md): interior rules from
+// old positions, Catmull–Clark rules on the boundary surface, crease and corner tags inherited.
 //
 // Child vertex numbering of one step (level k -> k+1), with V, E, F, C the level-k counts:
 //   [0, V)            vertex point of level-k vertex v

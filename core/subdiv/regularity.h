@@ -1,6 +1,6 @@
 #pragma once
-// Regularity of level-k cells (docs/design/mj-subdivision.md §6.1) and the 4x4x4 control block of a regular
-// cell in a consistent (u, v, w) frame.
+// Regularity of level-k cells (docs/design/mj-subdivision.md §6.1) and the 4x4x4 control block of a
+// regular cell in a consistent (u, v, w) frame.
 
 #include <array>
 #include <cstdint>

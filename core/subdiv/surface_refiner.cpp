@@ -31,8 +31,8 @@ const char* schemeName(SurfaceScheme scheme) {
 
 }  // namespace
 
-SurfaceMesh refineSurface(const SurfaceMesh& surface, SurfaceScheme scheme, int levels, bool toLimit,
-                          SurfaceBoundary boundary, const SurfaceTags& tags) {
+SurfaceMesh refineSurface(const SurfaceMesh& surface, SurfaceScheme scheme, int levels,
+                          bool toLimit, SurfaceBoundary boundary, const SurfaceTags& tags) {
   if (levels < 0 || levels > 8)
     throw std::invalid_argument(std::string(schemeName(scheme)) +
                                 " refinement levels must be in 0..8 (got " +
@@ -119,7 +119,8 @@ SurfaceMesh refineSurface(const SurfaceMesh& surface, SurfaceScheme scheme, int 
   SurfaceMesh refined;
   refined.positions.resize(static_cast<Eigen::Index>(current.size()), 3);
   for (size_t v = 0; v < current.size(); ++v)
-    for (int d = 0; d < 3; ++d) refined.positions(static_cast<Eigen::Index>(v), d) = current[v].p[d];
+    for (int d = 0; d < 3; ++d)
+      refined.positions(static_cast<Eigen::Index>(v), d) = current[v].p[d];
   refined.faces.values.reserve(static_cast<size_t>(last.GetNumFaceVertices()));
   for (int f = 0; f < last.GetNumFaces(); ++f) {
     const Far::ConstIndexArray verts = last.GetFaceVertices(f);

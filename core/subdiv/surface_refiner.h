@@ -33,7 +33,7 @@ enum class SurfaceBoundary {
 /// level). Throws std::invalid_argument for levels outside 0..8, a face with fewer than three
 /// corners (or not three for Loop), an index out of range (faces or tags), or a topology
 /// OpenSubdiv refuses.
-SurfaceMesh refineSurface(const SurfaceMesh& surface, SurfaceScheme scheme, int levels, bool toLimit,
-                          SurfaceBoundary boundary, const SurfaceTags& tags = {});
+SurfaceMesh refineSurface(const SurfaceMesh& surface, SurfaceScheme scheme, int levels,
+                          bool toLimit, SurfaceBoundary boundary, const SurfaceTags& tags = {});
 
 }  // namespace sculpt

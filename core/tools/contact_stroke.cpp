@@ -8,7 +8,8 @@
 namespace sculpt {
 
 void ContactStroke::begin(ToolContext& context, const ToolInput& input) {
-  if (!input.position.allFinite()) throw std::invalid_argument("probe: the position is not finite.");
+  if (!input.position.allFinite())
+    throw std::invalid_argument("probe: the position is not finite.");
   if (settings_.surfaceVertices && settings_.surfaceTriangles)
     boundary_ = std::make_unique<DeformedBoundary>(context.model(), context.locator(),
                                                    *settings_.surfaceVertices,
@@ -38,7 +39,8 @@ void ContactStroke::update(ToolContext& context, const ToolInput& input) {
   if (!point) return;
   youngs_ = pickMaterial(context.model(), rest).youngs;
   double stiffness = settings_.stiffnessForYoungs ? settings_.stiffnessForYoungs(youngs_) : 0.0;
-  if (!(std::isfinite(stiffness) && stiffness > 0)) stiffness = defaultPullStiffness(context.model());
+  if (!(std::isfinite(stiffness) && stiffness > 0))
+    stiffness = defaultPullStiffness(context.model());
   pull_->grab(*point, input.position, stiffness);  // lets the previous contact point go
   normal_ = hit->normal;
 

@@ -96,7 +96,8 @@ std::optional<BoundaryHit> DeformedBoundary::nearest(const Points& nodes,
   double bestSquared = std::numeric_limits<double>::infinity(), winding = 0.0;
   for (uint32_t t = 0; t < triangles_.size(); ++t) {
     const auto& tri = triangles_[t];
-    const Eigen::Vector3d a = row(vertices, tri[0]), b = row(vertices, tri[1]), c = row(vertices, tri[2]);
+    const Eigen::Vector3d a = row(vertices, tri[0]), b = row(vertices, tri[1]),
+                          c = row(vertices, tri[2]);
     winding += solidAngle(a - position, b - position, c - position);
     const Eigen::Vector3d bary = closestPointOnTriangle(position, a, b, c);
     const Eigen::Vector3d q = bary[0] * a + bary[1] * b + bary[2] * c;
@@ -111,9 +112,11 @@ std::optional<BoundaryHit> DeformedBoundary::nearest(const Points& nodes,
   winding /= 4.0 * M_PI;
   const bool inside = std::abs(winding) > 0.5;
   const auto& tri = triangles_[best.triangle];
-  const Eigen::Vector3d a = row(vertices, tri[0]), b = row(vertices, tri[1]), c = row(vertices, tri[2]);
+  const Eigen::Vector3d a = row(vertices, tri[0]), b = row(vertices, tri[1]),
+                        c = row(vertices, tri[2]);
   Eigen::Vector3d faceNormal = (b - a).cross(c - a);
-  faceNormal = faceNormal.norm() > 0 ? Eigen::Vector3d(faceNormal.normalized()) : Eigen::Vector3d::UnitZ();
+  faceNormal =
+      faceNormal.norm() > 0 ? Eigen::Vector3d(faceNormal.normalized()) : Eigen::Vector3d::UnitZ();
   if (winding < -0.5) faceNormal = -faceNormal;  // an inward-oriented surface
   const double distance = std::sqrt(bestSquared);
   const Eigen::Vector3d out = best.point - position;

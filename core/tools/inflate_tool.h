@@ -1,8 +1,8 @@
 #pragma once
-// Inflate / deflate (docs/design/ux.md "Brushes", McDonnell-Qin section 4.1): a pressure on the boundary
-// faces inside the brush sphere while the button is held. Positive pressure inflates, negative
-// deflates (Ctrl in the window negates it). The sphere is in rest coordinates (the window maps
-// its hit to the rest position through the material point), so the pressed faces stay the same
+// Inflate / deflate (docs/design/ux.md "Brushes", McDonnell-Qin section 4.1): a pressure on the
+// boundary faces inside the brush sphere while the button is held. Positive pressure inflates,
+// negative deflates (Ctrl in the window negates it). The sphere is in rest coordinates (the window
+// maps its hit to the rest position through the material point), so the pressed faces stay the same
 // while the solid moves. The tool keeps a reference to its simulator, which must outlive it.
 
 #include <Eigen/Core>

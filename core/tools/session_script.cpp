@@ -88,7 +88,8 @@ class Reader {
  private:
   double checkNumber(const json& value, const std::string& field, double lo, bool loOpen,
                      const char* range) const {
-    if (!value.is_number()) fail(field, "must be " + std::string(range) + " (got " + value.dump() + ")");
+    if (!value.is_number())
+      fail(field, "must be " + std::string(range) + " (got " + value.dump() + ")");
     const double v = value.get<double>();
     if (!std::isfinite(v) || v < lo || (loOpen && v == lo))
       fail(field, "must be " + std::string(range) + " (got " + number(v) + ")");
@@ -189,7 +190,8 @@ PaintEvent parsePaint(const Reader& r) {
   brush.fields = {r.has("density"), r.has("damping"), r.has("youngs"), r.has("poisson")};
   if (!r.has("density") && !r.has("damping") && !r.has("youngs") && !r.has("poisson"))
     r.failContext("a paint needs at least one of 'youngs', 'density', 'damping', 'poisson'");
-  brush.target.youngs = r.numberOr("youngs", brush.target.youngs, 0.0, true, "a finite number > 0 (Pa)");
+  brush.target.youngs =
+      r.numberOr("youngs", brush.target.youngs, 0.0, true, "a finite number > 0 (Pa)");
   brush.target.density =
       r.numberOr("density", brush.target.density, 0.0, true, "a finite number > 0 (kg/m^3)");
   brush.target.damping =
@@ -197,11 +199,13 @@ PaintEvent parsePaint(const Reader& r) {
   brush.target.poisson = r.numberOr("poisson", brush.target.poisson, -1.0, true,
                                     "a finite number in (-1, 0.5)");
   if (brush.target.poisson >= 0.5)
-    r.fail("poisson", "must be a finite number in (-1, 0.5) (got " + number(brush.target.poisson) + ")");
+    r.fail("poisson",
+           "must be a finite number in (-1, 0.5) (got " + number(brush.target.poisson) + ")");
   const std::string falloff = r.stringOr("falloff", "smooth");
   const std::optional<Falloff> parsed = parseFalloff(falloff);
   if (!parsed)
-    r.fail("falloff", "must be one of smooth, sphere, linear, sharp, constant (got \"" + falloff + "\")");
+    r.fail("falloff",
+           "must be one of smooth, sphere, linear, sharp, constant (got \"" + falloff + "\")");
   brush.falloff = *parsed;
   brush.strength = r.numberOr("strength", 1.0, 0.0, false, "a finite number in [0, 1]");
   if (brush.strength > 1)
@@ -210,9 +214,13 @@ PaintEvent parsePaint(const Reader& r) {
   brush.mirror.x = brush.mirror.y = brush.mirror.z = false;
   if (mirror != "none") {
     for (char c : mirror) {
-      bool* axis = c == 'x' ? &brush.mirror.x : c == 'y' ? &brush.mirror.y : c == 'z' ? &brush.mirror.z : nullptr;
+      bool* axis = c == 'x'   ? &brush.mirror.x
+                   : c == 'y' ? &brush.mirror.y
+                   : c == 'z' ? &brush.mirror.z
+                              : nullptr;
       if (!axis || *axis)
-        r.fail("mirror", "must be \"none\" or distinct letters from \"xyz\" (got \"" + mirror + "\")");
+        r.fail("mirror",
+               "must be \"none\" or distinct letters from \"xyz\" (got \"" + mirror + "\")");
       *axis = true;
     }
   }
@@ -224,7 +232,8 @@ PinEvent parsePin(const Reader& r) {
   r.onlyFields({"t", "type", "box", "centre", "radius", "unpin"});
   PinEvent pin;
   if (r.has("box")) {
-    if (r.has("centre") || r.has("radius")) r.failContext("give either 'box' or 'centre' and 'radius'");
+    if (r.has("centre") || r.has("radius"))
+      r.failContext("give either 'box' or 'centre' and 'radius'");
     const json& box = r.at("box");
     if (!box.is_array() || box.size() != 2)
       r.fail("box", "must be [[xmin, ymin, zmin], [xmax, ymax, zmax]]");
@@ -232,7 +241,8 @@ PinEvent parsePin(const Reader& r) {
     if ((lo.array() > hi.array()).any()) r.fail("box", "must have min <= max on every axis");
     pin.box = Eigen::AlignedBox3d(lo, hi);
   } else {
-    if (!r.has("centre") && !r.has("radius")) r.failContext("a pin needs 'box' or 'centre' and 'radius'");
+    if (!r.has("centre") && !r.has("radius"))
+      r.failContext("a pin needs 'box' or 'centre' and 'radius'");
     pin.centre = r.vector("centre");
     pin.radius = r.numberField("radius", 0.0, false, "a finite number >= 0 (m)");
   }
@@ -394,7 +404,8 @@ SessionScript parseSessionScript(std::string_view text, std::string_view sourceN
     if (!events[i].is_object()) throw FileError(context + ": must be a JSON object.");
     const Reader bare(events[i], context);
     const std::string type = bare.stringOr("type", "");
-    if (type.empty()) bare.fail("type", "must be one of grab, inflate, paint, pin, curve, topology");
+    if (type.empty())
+      bare.fail("type", "must be one of grab, inflate, paint, pin, curve, topology");
     const Reader r(events[i], context + " (" + type + ")");
     ScriptEvent event;
     event.index = i;

@@ -22,7 +22,8 @@ void PullStroke::update(ToolContext&, const ToolInput& input) {
 }
 
 void PullStroke::end(ToolContext&, const ToolInput&) {
-  if (pull_ && pull_->active()) pull_->release(settings_.keep ? ReleaseMode::Keep : ReleaseMode::LetGo);
+  if (pull_ && pull_->active())
+    pull_->release(settings_.keep ? ReleaseMode::Keep : ReleaseMode::LetGo);
 }
 
 void PullStroke::clear() {
@@ -106,14 +107,16 @@ void PinStroke::begin(ToolContext& context, const ToolInput& input) {
     touched_ += pinInBox(context.simulator(), *settings_.box, pin);
     return;
   }
-  touched_ += pinInSphere(context.simulator(), restPointOf(context, input, "pin"), settings_.radius, pin);
+  touched_ +=
+      pinInSphere(context.simulator(), restPointOf(context, input, "pin"), settings_.radius, pin);
 }
 
 void PinStroke::update(ToolContext& context, const ToolInput& input) {
   if (settings_.box) return;
   const std::optional<Eigen::Vector3d> rest =
       input.restPoint ? input.restPoint : context.restPointAt(input.position);
-  if (rest) touched_ += pinInSphere(context.simulator(), *rest, settings_.radius, !input.inverted());
+  if (rest)
+    touched_ += pinInSphere(context.simulator(), *rest, settings_.radius, !input.inverted());
 }
 
 // ---------------------------------------------------------------------------------------------
@@ -122,7 +125,8 @@ void PinStroke::update(ToolContext& context, const ToolInput& input) {
 void CurveStroke::begin(ToolContext& context, const ToolInput& input) {
   std::vector<CurveSample> samples = settings_.sampled;
   if (samples.empty())
-    samples = sampleCurve(context.model(), context.locator(), settings_.polyline, settings_.samples);
+    samples =
+        sampleCurve(context.model(), context.locator(), settings_.polyline, settings_.samples);
   if (!curve_) curve_ = std::make_unique<CurveTool>(context.simulator());
   curve_->grab(std::move(samples), settings_.profile, settings_.stiffness);
   origin_ = settings_.dragOrigin ? *settings_.dragOrigin : input.position;

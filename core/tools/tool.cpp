@@ -39,7 +39,8 @@ std::optional<Eigen::Vector3d> SimulatorToolContext::restPointAt(const Eigen::Ve
   model.nodesFromControl(simulator_.positions(), nodes);
   if (nodes.rows() == 0) return std::nullopt;
   Eigen::Index nearest = 0;
-  const double distanceSquared = (nodes.rowwise() - world.transpose()).rowwise().squaredNorm().minCoeff(&nearest);
+  const double distanceSquared =
+      (nodes.rowwise() - world.transpose()).rowwise().squaredNorm().minCoeff(&nearest);
   const double reach = typicalCellSize(model);
   if (distanceSquared > reach * reach) return std::nullopt;
   return model.mesh().restNodes.row(nearest).transpose();

@@ -10,7 +10,8 @@ Eigen::Vector3d VelocityEstimator::add(double t, const Eigen::Vector3d& position
   if (count_ == kCapacity) first_ = (first_ + 1) % kCapacity, --count_;
   samples_[(first_ + count_) % kCapacity] = {t, position};
   ++count_;
-  while (count_ > 2 && t - samples_[first_].t > window_) first_ = (first_ + 1) % kCapacity, --count_;
+  while (count_ > 2 && t - samples_[first_].t > window_)
+    first_ = (first_ + 1) % kCapacity, --count_;
 
   // Least-squares slope: sum (t - tm)(x - xm) / sum (t - tm)^2.
   double tm = 0;

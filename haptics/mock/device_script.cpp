@@ -186,8 +186,10 @@ ScriptSample DeviceScript::sample(double t) const {
 
 DeviceScript parseDeviceScript(const nlohmann::json& script) {
   if (!script.is_object()) fail("a device script must be a JSON object, got ", script.dump());
-  onlyKnownFields(script, "", {"format", "version", "model", "mode", "tool", "description", "hand", "keys"});
-  if (const auto format = script.find("format"); format != script.end() && *format != "sculpt-device-script")
+  onlyKnownFields(script, "",
+                  {"format", "version", "model", "mode", "tool", "description", "hand", "keys"});
+  if (const auto format = script.find("format");
+      format != script.end() && *format != "sculpt-device-script")
     fail("\"format\" must be \"sculpt-device-script\", got ", format->dump());
   const json& version = required(script, "version", "version", "must be 1");
   if (!version.is_number_integer() || version.get<int64_t>() != 1)

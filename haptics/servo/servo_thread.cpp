@@ -122,7 +122,8 @@ ServoStatistics ServoThread::statistics() const {
   s.droppedTicks = dropped_;
   if (!periods_.empty()) {
     std::vector<double> sorted = periods_;
-    const size_t k = std::min(sorted.size() - 1, static_cast<size_t>(0.99 * static_cast<double>(sorted.size())));
+    const size_t k =
+        std::min(sorted.size() - 1, static_cast<size_t>(0.99 * static_cast<double>(sorted.size())));
     std::nth_element(sorted.begin(), sorted.begin() + static_cast<std::ptrdiff_t>(k), sorted.end());
     s.periodP99Ms = sorted[k] * 1e3;
     s.periodMaxMs = *std::max_element(periods_.begin(), periods_.end()) * 1e3;

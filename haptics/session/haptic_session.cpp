@@ -32,9 +32,11 @@ HapticScene hapticSceneOf(const std::shared_ptr<const SceneGeometry>& shared,
   const SceneGeometry& geometry = *shared;
   if (geometry.restPositions.rows() > 0 && !geometry.triangles.empty()) {
     scene.surfaceVertices = std::shared_ptr<const Points>(shared, &geometry.restPositions);
-    scene.surfaceTriangles = std::shared_ptr<const std::vector<uint32_t>>(shared, &geometry.triangles);
+    scene.surfaceTriangles =
+        std::shared_ptr<const std::vector<uint32_t>>(shared, &geometry.triangles);
   }
-  const Points& points = geometry.restPositions.rows() > 0 ? geometry.restPositions : geometry.restControl;
+  const Points& points =
+      geometry.restPositions.rows() > 0 ? geometry.restPositions : geometry.restControl;
   if (points.rows() > 0) {
     const Eigen::Vector3d lo = points.colwise().minCoeff().transpose();
     const Eigen::Vector3d hi = points.colwise().maxCoeff().transpose();
@@ -55,7 +57,8 @@ HapticSession::HapticSession(SimulationLoop& loop, HapticDevice& device, const H
              settings.servoRateHz, settings.recordTicks),
       settings_(std::move(settings)) {
   forceFactor_ = settings_.forceFactor;
-  scale_ = chooseForceScale(device.info(), mapping_.scale, scene.youngs, scene.radius, forceFactor_);
+  scale_ =
+      chooseForceScale(device.info(), mapping_.scale, scene.youngs, scene.radius, forceFactor_);
   status_.scale = scale_;
   status_.mapping = mapping_;
   status_.forceLimit = device.info().maxForce;
@@ -174,7 +177,8 @@ void HapticSession::run() {
       mapping_.rotation = rotation_;
     }
     if (factor != appliedForceFactor_) {
-      scale_ = chooseForceScale(device_.info(), mapping_.scale, scene_.youngs, scene_.radius, factor);
+      scale_ =
+          chooseForceScale(device_.info(), mapping_.scale, scene_.youngs, scene_.radius, factor);
       appliedForceFactor_ = factor;
     }
 
@@ -210,7 +214,8 @@ void HapticSession::run() {
         inflateAnchor = device;
         lastSent = input;
       }
-    } else if (stroke != 0 && (input.position != lastSent.position || input.buttons != lastSent.buttons)) {
+    } else if (stroke != 0 &&
+               (input.position != lastSent.position || input.buttons != lastSent.buttons)) {
       loop_.updateStroke(stroke, input);
       lastSent = input;
     }

@@ -36,7 +36,8 @@ class FakeAnimatedSurface : public AnimatedSurface {
       std::vector<uint32_t> offsets{0};
       for (uint32_t j = 0; j + 1 < ny; ++j)
         for (uint32_t i = 0; i + 1 < nx; ++i) {
-          for (const uint32_t v : {j * nx + i, j * nx + i + 1, (j + 1) * nx + i + 1, (j + 1) * nx + i}) {
+          for (const uint32_t v :
+               {j * nx + i, j * nx + i + 1, (j + 1) * nx + i + 1, (j + 1) * nx + i}) {
             corners.push_back({v, v, v});
           }
           const uint32_t a = j * nx + i, b = a + 1, c = a + nx + 1, d = a + nx;
@@ -62,8 +63,12 @@ class FakeAnimatedSurface : public AnimatedSurface {
   uint32_t segmentCount() const override { return static_cast<uint32_t>(segments_.size()); }
   FrameRange segment(uint32_t s) const override { return segments_[s].range; }
   const SurfaceMesh& restSurface(uint32_t s) const override { return segments_[s].rest; }
-  const std::vector<float>& restVertexNormals(uint32_t s) const override { return segments_[s].normals; }
-  const std::vector<uint32_t>& triangles(uint32_t s) const override { return segments_[s].triangles; }
+  const std::vector<float>& restVertexNormals(uint32_t s) const override {
+    return segments_[s].normals;
+  }
+  const std::vector<uint32_t>& triangles(uint32_t s) const override {
+    return segments_[s].triangles;
+  }
   const VolumeMesh& restSolid(uint32_t s) const override { return segments_[s].solid; }
 
   /// The known motion: a travelling wave along z, w(x, t) = amplitude sin(2 pi (x - t)).
@@ -93,7 +98,8 @@ class FakeAnimatedSurface : public AnimatedSurface {
     const Segment& seg = segments_[segmentOf(frame)];
     const double t = frameTime(frame);
     out.nodes = seg.solid.positions;
-    for (Eigen::Index i = 0; i < out.nodes.rows(); ++i) out.nodes(i, 2) += offset(out.nodes(i, 0), t);
+    for (Eigen::Index i = 0; i < out.nodes.rows(); ++i)
+      out.nodes(i, 2) += offset(out.nodes(i, 0), t);
     out.displacement = out.nodes - seg.solid.positions;
     const size_t cells = seg.solid.numCells();
     out.fields.youngs.assign(cells, static_cast<float>(1.0e5 * (1.0 + frame)));

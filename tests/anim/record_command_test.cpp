@@ -97,7 +97,8 @@ TEST_F(RecordCommand, CachesAndObjFramesAreTheRecordedPositionsAndTheGlbIsWithin
     EXPECT_EQ(test::bigEndianFloat(mdd, 8 + 4 * f), static_cast<float>(f / kFps));
     for (size_t i = 0; i < values; ++i) {
       cacheMismatches += littleFloat(pc2, 32 + 4 * (f * values + i)) != expected[f][i];
-      cacheMismatches += test::bigEndianFloat(mdd, mddData + 4 * (f * values + i)) != expected[f][i];
+      cacheMismatches +=
+          test::bigEndianFloat(mdd, mddData + 4 * (f * values + i)) != expected[f][i];
     }
     // OBJ: the v lines read back to the same floats.
     std::ifstream obj(framePath(framePatternOrThrow(path("t_####.obj")), f + 1));
@@ -123,7 +124,8 @@ TEST_F(RecordCommand, CachesAndObjFramesAreTheRecordedPositionsAndTheGlbIsWithin
   const auto& primitive = glb.json["meshes"][0]["primitives"][0];
   const std::vector<float> base = glb.values<float>(primitive["attributes"]["POSITION"]);
   std::vector<std::vector<float>> deltas;
-  for (const auto& target : primitive["targets"]) deltas.push_back(glb.values<float>(target["POSITION"]));
+  for (const auto& target : primitive["targets"])
+    deltas.push_back(glb.values<float>(target["POSITION"]));
   const auto& sampler = glb.json["animations"][0]["samplers"][0];
   const std::vector<float> times = glb.values<float>(sampler["input"]);
   const std::vector<float> weights = glb.values<float>(sampler["output"]);
@@ -134,7 +136,9 @@ TEST_F(RecordCommand, CachesAndObjFramesAreTheRecordedPositionsAndTheGlbIsWithin
   {
     Eigen::Vector3d lo = Eigen::Vector3d::Constant(1e30), hi = -lo;
     for (size_t v = 0; v < values / 3; ++v)
-      for (int d = 0; d < 3; ++d) lo[d] = std::min<double>(lo[d], base[3 * v + d]), hi[d] = std::max<double>(hi[d], base[3 * v + d]);
+      for (int d = 0; d < 3; ++d)
+        lo[d] = std::min<double>(lo[d], base[3 * v + d]),
+        hi[d] = std::max<double>(hi[d], base[3 * v + d]);
     diagonal = (hi - lo).norm();
   }
   double worst = 0.0;
@@ -142,11 +146,13 @@ TEST_F(RecordCommand, CachesAndObjFramesAreTheRecordedPositionsAndTheGlbIsWithin
     const float t = static_cast<float>(f / kFps);
     size_t k = 0;
     while (k + 2 < times.size() && times[k + 1] <= t) ++k;
-    const double s = times.size() < 2 ? 0.0 : std::clamp((t - times[k]) / (times[k + 1] - times[k]), 0.0f, 1.0f);
+    const double s =
+        times.size() < 2 ? 0.0 : std::clamp((t - times[k]) / (times[k + 1] - times[k]), 0.0f, 1.0f);
     int active = 0;
     std::vector<double> w(targets);
     for (size_t j = 0; j < targets; ++j) {
-      w[j] = (1 - s) * weights[k * targets + j] + (times.size() < 2 ? 0.0 : s * weights[(k + 1) * targets + j]);
+      w[j] = (1 - s) * weights[k * targets + j] +
+             (times.size() < 2 ? 0.0 : s * weights[(k + 1) * targets + j]);
       active += w[j] != 0.0;
     }
     EXPECT_LE(active, 2) << "frame " << f;
@@ -182,16 +188,19 @@ TEST_F(RecordCommand, RecordingTwiceGivesByteIdenticalFilesInEveryFormat) {
     EXPECT_EQ(readFile(entry.path()), readFile(other)) << entry.path().filename();
     ++files;
   }
-  EXPECT_EQ(files, 3u + 3 * kFrames + 3) << "glb, pc2, mdd, the three sequences, two .pvd and a .vtk.series";
+  EXPECT_EQ(files, 3u + 3 * kFrames + 3)
+      << "glb, pc2, mdd, the three sequences, two .pvd and a .vtk.series";
 }
 
 
 TEST_F(RecordCommand, GlbOfTheDefaultSceneAndOfAControlMeshScenePassTheKhronosValidator) {
   const fs::path script = test::gltfValidatorScript();
-  ASSERT_FALSE(script.empty()) << "the glTF validator is missing: run scripts/install-gltf-validator.sh";
+  ASSERT_FALSE(script.empty())
+      << "the glTF validator is missing: run scripts/install-gltf-validator.sh";
   ASSERT_EQ(run(recordBlock("--out " + test::quote(path("block.glb")))).exitCode, 0);
   const test::CliResult bunny =
-      run("record default --script " + test::quote(SCULPT_SOURCE_DIR "/assets/scripts/bunny_pull.json") +
+      run("record default --script " +
+          test::quote(SCULPT_SOURCE_DIR "/assets/scripts/bunny_pull.json") +
           " --seconds 0.5 --out " + test::quote(path("bunny.glb")));
   ASSERT_EQ(bunny.exitCode, 0) << bunny.err;
   for (const char* name : {"block.glb", "bunny.glb"}) {
@@ -207,14 +216,22 @@ TEST_F(RecordCommand, GlbOfTheDefaultSceneAndOfAControlMeshScenePassTheKhronosVa
 
 TEST_F(RecordCommand, BadRequestsAreOneSentenceAndWriteNothing) {
   expectBadInput(recordBlock("--out " + test::quote(path("frame.obj"))), "####");
-  expectBadInput(recordBlock("--out " + test::quote(path("take.abc"))), "unknown kind of recording");
-  expectBadInput("record " + test::quote(kBlock) + " --seconds 1 --fps 0 --out " + test::quote(path("a.glb")), "frame rate");
-  expectBadInput("record " + test::quote(kBlock) + " --seconds 1 --fps 2000 --out " + test::quote(path("a.glb")), "frame rate");
-  expectBadInput("record " + test::quote(kBlock) + " --seconds 4000 --fps 30 --out " + test::quote(path("a.glb")), "100000");
-  expectBadInput("record " + test::quote(kBlock) + " --out " + test::quote(path("a.glb")), "--seconds");
+  expectBadInput(recordBlock("--out " + test::quote(path("take.abc"))),
+                 "unknown kind of recording");
+  expectBadInput(
+      "record " + test::quote(kBlock) + " --seconds 1 --fps 0 --out " + test::quote(path("a.glb")),
+      "frame rate");
+  expectBadInput("record " + test::quote(kBlock) + " --seconds 1 --fps 2000 --out " +
+                     test::quote(path("a.glb")),
+                 "frame rate");
+  expectBadInput("record " + test::quote(kBlock) + " --seconds 4000 --fps 30 --out " +
+                     test::quote(path("a.glb")),
+                 "100000");
+  expectBadInput("record " + test::quote(kBlock) + " --out " + test::quote(path("a.glb")),
+                 "--seconds");
   // A folder that does not exist: the error names the file, exit 2, nothing written.
-  const test::CliResult missing = run(recordBlock("--out " + test::quote(path("no/such/dir/t.glb")) +
-                                                  " --out " + test::quote(path("ok.pc2"))));
+  const test::CliResult missing = run(recordBlock(
+      "--out " + test::quote(path("no/such/dir/t.glb")) + " --out " + test::quote(path("ok.pc2"))));
   EXPECT_EQ(missing.exitCode, 2);
   EXPECT_NE(missing.err.find("error: "), std::string::npos);
   EXPECT_NE(missing.err.find("t.glb"), std::string::npos) << missing.err;

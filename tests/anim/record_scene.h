@@ -14,7 +14,8 @@
 
 namespace sculpt::test {
 
-inline std::shared_ptr<const Take> recordScene(const SceneSource& source, const SceneSettings& settings,
+inline std::shared_ptr<const Take> recordScene(const SceneSource& source,
+                                               const SceneSettings& settings,
                                                const std::optional<SessionScript>& script,
                                                double fps, uint32_t frames) {
   std::optional<SceneBuildPhase1> phase1 = buildSceneGeometry(source, settings, 1);

@@ -232,8 +232,8 @@ TEST_F(FemCliTest, TheInversionBarrierTurnsASolidPushedThroughItselfBack) {
   EXPECT_GT(last["barrier"].at("min_jacobian"), 0.3);
   EXPECT_GT(last["corotated"].at("inverted_elements"), 0);
   EXPECT_LT(last["corotated"].at("min_jacobian"), 0.0);
-  expectBadInput("simulate " + quote(kAssets + "block3.json") + " --model neo --dt 0.01 --steps 1 " +
-                     "--out " + quote(path("x.vtk")),
+  expectBadInput("simulate " + quote(kAssets + "block3.json") +
+                     " --model neo --dt 0.01 --steps 1 " + "--out " + quote(path("x.vtk")),
                  "--model must be barrier or corotated, got 'neo'");
 }
 

@@ -1,6 +1,6 @@
 // Phong vs linear interpolation of regularized Kelvinlets on regular and jittered tet lattices:
-// the error ratio grows as the mesh resolves the brush (docs/design/phong-deformation.md: about 1.75x at
-// h/eps = 0.5, 4x at 0.25, 12x at 0.125).
+// the error ratio grows as the mesh resolves the brush (docs/design/phong-deformation.md:
+// about 1.75x at h/eps = 0.5, 4x at 0.25, 12x at 0.125).
 
 #include <gtest/gtest.h>
 

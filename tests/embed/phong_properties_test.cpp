@@ -19,23 +19,26 @@
 namespace sculpt {
 namespace {
 
-const InterpolationMethod kCellMethods[] = {InterpolationMethod::Linear, InterpolationMethod::Vertex,
-                                            InterpolationMethod::Phong};
+const InterpolationMethod kCellMethods[] = {
+    InterpolationMethod::Linear, InterpolationMethod::Vertex, InterpolationMethod::Phong};
 
 Eigen::Vector3d smoothMap(const Eigen::Vector3d& X) {
   return X + 0.15 * Eigen::Vector3d(std::sin(2 * X.y()) + X.z() * X.z(),
-                                    std::cos(1.5 * X.z()) * X.x(), X.x() * X.y() - X.z() * X.z() * X.z());
+                                    std::cos(1.5 * X.z()) * X.x(),
+                                    X.x() * X.y() - X.z() * X.z() * X.z());
 }
 
-Points mapNodes(const Points& rest, const std::function<Eigen::Vector3d(const Eigen::Vector3d&)>& f) {
+Points mapNodes(const Points& rest,
+                const std::function<Eigen::Vector3d(const Eigen::Vector3d&)>& f) {
   Points out(rest.rows(), 3);
-  for (Eigen::Index i = 0; i < rest.rows(); ++i) out.row(i) = f(rest.row(i).transpose()).transpose();
+  for (Eigen::Index i = 0; i < rest.rows(); ++i)
+    out.row(i) = f(rest.row(i).transpose()).transpose();
   return out;
 }
 
 void measured(const char* what, const char* mesh, InterpolationMethod method, double value) {
-  std::printf("[ measured ] %s, %s, %s: %.2e\n", what, mesh, std::string(methodName(method)).c_str(),
-              value);
+  std::printf("[ measured ] %s, %s, %s: %.2e\n", what, mesh,
+              std::string(methodName(method)).c_str(), value);
 }
 
 struct MeshCase {
@@ -88,7 +91,8 @@ TEST(PhongProperties, InterpolatesNodePositions) {
     for (InterpolationMethod method : kCellMethods) {
       deformer.setFrame(deformed, method);
       const Points result = deformer.positions();
-      measured("interpolation at nodes", test.name, method, (result - deformed).cwiseAbs().maxCoeff());
+      measured("interpolation at nodes", test.name, method,
+               (result - deformed).cwiseAbs().maxCoeff());
       EXPECT_LT((result - deformed).cwiseAbs().maxCoeff(), 1e-12)
           << test.name << ' ' << methodName(method);
     }
@@ -127,7 +131,8 @@ TEST(PhongProperties, ConstantGradientsReduceToLinearExactly) {
     const Points points = pointsInCells(test.mesh, 3, 12);
     EmbeddedDeformer deformer(test.mesh, points);
     const Points deformed =
-        mapNodes(test.mesh.positions, [&](const Eigen::Vector3d& X) -> Eigen::Vector3d { return A * X + t; });
+        mapNodes(test.mesh.positions,
+                 [&](const Eigen::Vector3d& X) -> Eigen::Vector3d { return A * X + t; });
     deformer.setFrame(deformed, InterpolationMethod::Phong);
     for (const Eigen::Matrix3d& F : deformer.nodeGradients()) EXPECT_LT((F - A).norm(), 1e-12);
     for (InterpolationMethod method : kCellMethods) {
@@ -148,7 +153,8 @@ TEST(PhongProperties, ContinuousAcrossSharedFaces) {
     const NodeFrame frame{&nodes, &deformer.nodeGradients()};
     // Every pair of cells sharing a face (3 or 4 common nodes): points on that face evaluated
     // from both sides agree.
-    const CompressedRows<uint32_t> nodeCells = invertIncidence(test.mesh.cells, test.mesh.numNodes());
+    const CompressedRows<uint32_t> nodeCells =
+        invertIncidence(test.mesh.cells, test.mesh.numNodes());
     std::mt19937 random(3);
     std::uniform_real_distribution<double> uniform(0.05, 0.95);
     int faces = 0;
@@ -183,7 +189,8 @@ TEST(PhongProperties, ContinuousAcrossSharedFaces) {
             bool constant = true;
             for (uint32_t node : shared)
               constant = constant &&
-                         std::abs(cellLocalCoordinates(test.mesh, c, test.mesh.positions.row(node).transpose())[d] -
+                         std::abs(cellLocalCoordinates(
+                                      test.mesh, c, test.mesh.positions.row(node).transpose())[d] -
                                   corner[d]) < 1e-9;
             if (constant) xi[d] = std::round(corner[d]);
           }
@@ -223,7 +230,8 @@ TEST(PhongProperties, GradientAndNormalsMatchFiniteDifferences) {
         for (int d = 0; d < 3; ++d) {
           const Eigen::Vector3d e = h * Eigen::Vector3d::Unit(d);
           const auto f = [&](const Eigen::Vector3d& Y) {
-            return interpolatePosition(test.mesh, frame, cell, cellLocalCoordinates(test.mesh, cell, Y),
+            return interpolatePosition(test.mesh, frame, cell,
+                                       cellLocalCoordinates(test.mesh, cell, Y),
                                        gradientBlend(method));
           };
           fd.col(d) = (f(X + e) - f(X - e)) / (2 * h);
@@ -286,7 +294,8 @@ TEST(PhongEmbedding, LocatesInsideAndExtrapolatesOutside) {
     const Eigen::Vector3d X = points.row(p).transpose();
     ASSERT_TRUE(embedding.local.row(p).allFinite());
     // The local coordinates reproduce the point (also extrapolated outside the mesh).
-    EXPECT_LT((cellPoint(mesh, embedding.cells[p], embedding.local.row(p).transpose()) - X).norm(), 1e-12);
+    EXPECT_LT((cellPoint(mesh, embedding.cells[p], embedding.local.row(p).transpose()) - X).norm(),
+              1e-12);
     const bool insideBox = (X.array() >= 0.0).all() && (X.array() <= 1.0).all();
     if (!insideBox) {
       ++outside;

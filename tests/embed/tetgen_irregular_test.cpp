@@ -18,7 +18,8 @@ namespace {
 
 VolumeMesh tetgenBox(const char* name) {
   // tetgen is installed by scripts/install-deps.sh: a missing tetgen is a failure, not a skip.
-  EXPECT_TRUE(test::tetgenAvailable()) << "tetgen not on PATH (scripts/install-deps.sh installs it)";
+  EXPECT_TRUE(test::tetgenAvailable())
+      << "tetgen not on PATH (scripts/install-deps.sh installs it)";
   test::ScopedTempDir dir(name);
   std::string error;
   // Max volume 0.002: mean edge about 0.25 in a box of edge 4 (h / eps about 0.25 below).
@@ -49,8 +50,10 @@ TEST(TetGenIrregular, PhongBeatsLinearOnKelvinletsAndBendTwist) {
   Eigen::Matrix3d pinch;
   pinch << 1.0, 0.3, 0.0, 0.3, -0.5, 0.2, 0.0, 0.2, -0.5;
   const RegularizedKelvinlet kelvinlets[] = {
-      RegularizedKelvinlet::grab(Eigen::Vector3d(0.01, 0.02, -0.01), Eigen::Vector3d(1, 0.5, -0.3), 1.0),
-      RegularizedKelvinlet::twist(Eigen::Vector3d(0.01, 0.02, -0.01), Eigen::Vector3d(0.2, 0.3, 1), 1.0),
+      RegularizedKelvinlet::grab(Eigen::Vector3d(0.01, 0.02, -0.01), Eigen::Vector3d(1, 0.5, -0.3),
+                                 1.0),
+      RegularizedKelvinlet::twist(Eigen::Vector3d(0.01, 0.02, -0.01), Eigen::Vector3d(0.2, 0.3, 1),
+                                  1.0),
       RegularizedKelvinlet::pinch(Eigen::Vector3d(0.01, 0.02, -0.01), 0.5 * pinch, 1.0)};
   for (const RegularizedKelvinlet& kelvinlet : kelvinlets) {
     const MethodErrors errors = measureInterpolationErrors(
@@ -70,7 +73,8 @@ TEST(TetGenIrregular, PhongBeatsLinearOnKelvinletsAndBendTwist) {
 
 TEST(TetGenIrregular, QuadraticFitGradientsBeatTheAverageOnASphere) {
   // An irregular mesh with a curved boundary: most of a ball's volume is near its surface.
-  EXPECT_TRUE(test::tetgenAvailable()) << "tetgen not on PATH (scripts/install-deps.sh installs it)";
+  EXPECT_TRUE(test::tetgenAvailable())
+      << "tetgen not on PATH (scripts/install-deps.sh installs it)";
   test::ScopedTempDir dir("phong_tetgen_sphere");
   std::string error;
   const auto mesh = test::tetgenMesh(test::icosphereSurface(Eigen::Vector3d::Zero(), 1.0, 3),
@@ -88,7 +92,8 @@ TEST(TetGenIrregular, QuadraticFitGradientsBeatTheAverageOnASphere) {
       }};
   const char* names[] = {"bend+twist", "kelvinlet twist at the surface"};
   for (size_t k = 0; k < std::size(maps); ++k) {
-    const MethodErrors fit = measureInterpolationErrors(*mesh, points, maps[k], GradientScheme::Fit);
+    const MethodErrors fit =
+        measureInterpolationErrors(*mesh, points, maps[k], GradientScheme::Fit);
     const MethodErrors average =
         measureInterpolationErrors(*mesh, points, maps[k], GradientScheme::Average);
     std::printf("[ measured ] sphere, %u tets, mean edge %.4f, %s: phong rms fit %.3e average %.3e "

@@ -1,5 +1,5 @@
-// Patch tests (docs/design/local-frame-fem.md, "Proof"): an affine deformation x = F X + t of a distorted
-// trilinear mesh gives the same strain at every Gauss point, so
+// Patch tests (docs/design/local-frame-fem.md, "Proof"): an affine deformation x = F X + t of a
+// distorted trilinear mesh gives the same strain at every Gauss point, so
 //   - the energy is V (mu eps:eps + lambda/2 tr(eps)^2) with V the exact volume,
 //   - nodes off the boundary get no force (constant stress is in equilibrium),
 //   - the boundary forces are the tractions of that stress: sum_a g_a X_a^T = V R sigma.

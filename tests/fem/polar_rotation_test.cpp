@@ -167,20 +167,24 @@ TEST(PolarRotation, WarmStartFromANearbyOrFarGuessGivesTheColdResult) {
     if (k % 10 == 7) F.col(0) = -F.col(0);  // inverted
     const Eigen::Matrix3d cold = polarRotation(F);
     const Eigen::Matrix3d nearGuess =
-        cold * Eigen::AngleAxisd(std::abs(small(rng)), Eigen::Vector3d(small(rng), 1.0, small(rng)).normalized())
+        cold * Eigen::AngleAxisd(std::abs(small(rng)),
+                                 Eigen::Vector3d(small(rng), 1.0, small(rng)).normalized())
                    .toRotationMatrix();
     const Eigen::Matrix3d farGuess =
-        cold * Eigen::AngleAxisd(std::numbers::pi, Eigen::Vector3d(1.0, small(rng), 0.0).normalized())
-                   .toRotationMatrix();
-    for (const Eigen::Matrix3d& guess : {nearGuess, farGuess, Eigen::Matrix3d(Eigen::Matrix3d::Identity())}) {
+        cold *
+        Eigen::AngleAxisd(std::numbers::pi, Eigen::Vector3d(1.0, small(rng), 0.0).normalized())
+            .toRotationMatrix();
+    for (const Eigen::Matrix3d& guess :
+         {nearGuess, farGuess, Eigen::Matrix3d(Eigen::Matrix3d::Identity())}) {
       const Eigen::Matrix3d warm = polarRotation(F, guess);
       worst = std::max(worst, (warm - cold).cwiseAbs().maxCoeff());
       ASSERT_LT((warm - cold).cwiseAbs().maxCoeff(), 1e-12) << "F\n" << F << "\nguess\n" << guess;
     }
   }
-  std::printf("warm-started polar rotation: max |R_warm - R_cold| = %.3g over 60000 cases\n", worst);
-  for (const Eigen::Matrix3d& F :
-       {Eigen::Matrix3d(Eigen::Matrix3d::Zero()), Eigen::Matrix3d(Eigen::Vector3d(1, 1, 0).asDiagonal())}) {
+  std::printf("warm-started polar rotation: max |R_warm - R_cold| = %.3g over 60000 cases\n",
+              worst);
+  for (const Eigen::Matrix3d& F : {Eigen::Matrix3d(Eigen::Matrix3d::Zero()),
+                                   Eigen::Matrix3d(Eigen::Vector3d(1, 1, 0).asDiagonal())}) {
     const Eigen::Matrix3d warm = polarRotation(F, Eigen::Matrix3d::Identity());
     ASSERT_TRUE(warm.allFinite());
     EXPECT_LT((warm - polarRotation(F)).cwiseAbs().maxCoeff(), 1e-12);

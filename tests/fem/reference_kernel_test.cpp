@@ -343,9 +343,9 @@ void compareWithNaive(bool painted, bool boxes = false) {
       "naive reference%s on level-2 %s (%u tricubic, %u trilinear, %u pyramid): "
       "volume rel.err %.2g, |R_e - R_naive| %.2g, energy %.10g vs %.10g (rel.err %.2g), "
       "gradient rel.err %.2g, Hessian product rel.err %.2g\n",
-      painted ? " (painted ball)" : "", boxes ? "block3" : "mixed mesh", mesh.counts().tricubic, mesh.counts().trilinear,
-      mesh.counts().pyramid, volumeError, rotationError, energy, ref.energy, energyError,
-      gradientError, hessianError);
+      painted ? " (painted ball)" : "", boxes ? "block3" : "mixed mesh", mesh.counts().tricubic,
+      mesh.counts().trilinear, mesh.counts().pyramid, volumeError, rotationError, energy,
+      ref.energy, energyError, gradientError, hessianError);
 }
 
 TEST(ReferenceKernel, UniformMaterial) { compareWithNaive(false); }

@@ -1,6 +1,6 @@
 // Rigid motion of the rest shape gives zero internal force and zero energy once the element
-// rotations are updated (docs/design/local-frame-fem.md, "Proof"), for each element type on its own: the
-// mesh is filtered to one type so no other element can hide or cancel a residual.
+// rotations are updated (docs/design/local-frame-fem.md, "Proof"), for each element type on its
+// own: the mesh is filtered to one type so no other element can hide or cancel a residual.
 
 #include <gtest/gtest.h>
 

@@ -149,8 +149,9 @@ TEST_F(HeadlessWindow, PanelsAndColourBarWhenAFieldIsShown) {
   const int lowWith = colourMapPixels(field, 0.0f, x0, y0, x1, y1, 6);
   const int highWithout = colourMapPixels(plain, 1.0f, x0, y0, x1, y1, 6);
   const int lowWithout = colourMapPixels(plain, 0.0f, x0, y0, x1, y1, 6);
-  std::printf("[ measured ] colour bar ends: %d high, %d low pixels with the field; %d, %d without\n",
-              highWith, lowWith, highWithout, lowWithout);
+  std::printf(
+      "[ measured ] colour bar ends: %d high, %d low pixels with the field; %d, %d without\n",
+      highWith, lowWith, highWithout, lowWithout);
   // The bar is 18 px wide; its end slices hold a few dozen pixels within 6/255 of each end colour.
   EXPECT_GE(highWith, 20);
   EXPECT_GE(lowWith, 20);
@@ -221,14 +222,17 @@ TEST_F(HeadlessWindow, BadInputIsExit2) {
   EXPECT_EQ(run("--quit-after -1"), 2);
   EXPECT_EQ(run("--field pressure"), 2);
   EXPECT_EQ(run("--supersample 3"), 2);
-  EXPECT_EQ(run("--headless --scene /nonexistent.obj --screenshot " + (dir_ / "x.png").string()), 2);
+  EXPECT_EQ(run("--headless --scene /nonexistent.obj --screenshot " + (dir_ / "x.png").string()),
+            2);
   EXPECT_FALSE(fs::exists(dir_ / "x.png"));
   const fs::path bad = dir_ / "bad.json";
   std::ofstream(bad) << "{\"format\": \"sculpt-control-mesh\", \"vertices\": [[0,0,";
-  EXPECT_EQ(run("--headless --scene " + bad.string() + " --screenshot " + (dir_ / "y.png").string()), 2);
+  EXPECT_EQ(
+      run("--headless --scene " + bad.string() + " --screenshot " + (dir_ / "y.png").string()), 2);
   EXPECT_NE(errors().find("bad.json"), std::string::npos) << errors();
   const fs::path script = dir_ / "script.json";
-  std::ofstream(script) << R"({"format": "sculpt-session", "version": 1, "events": [{"t": 0, "type": "grab"}]})";
+  std::ofstream(script)
+      << R"({"format": "sculpt-session", "version": 1, "events": [{"t": 0, "type": "grab"}]})";
   EXPECT_EQ(run("--headless --script " + script.string() + " --screenshot " +
                 (dir_ / "z.png").string()),
             2);

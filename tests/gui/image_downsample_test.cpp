@@ -11,8 +11,9 @@ namespace {
 
 TEST(ImageDownsample, AveragesOpaqueBlocks) {
   // 4x2 image, factor 2: left block black/white checker -> grey 128 (rounded), right block red.
-  std::vector<uint8_t> image = {0,   0,   0,   255, 255, 255, 255, 255, 255, 0, 0, 255, 255, 0, 0, 255,
-                                255, 255, 255, 255, 0,   0,   0,   255, 255, 0, 0, 255, 255, 0, 0, 255};
+  std::vector<uint8_t> image = {0,   0,   0,   255, 255, 255, 255, 255, 255, 0,  0,
+                                255, 255, 0,   0,   255, 255, 255, 255, 255, 0,  0,
+                                0,   255, 255, 0,   0,   255, 255, 0,   0,   255};
   const std::vector<uint8_t> out = downsample(image, 4, 2, 2);
   ASSERT_EQ(out.size(), 8u);
   EXPECT_EQ(out[0], 128);

@@ -355,7 +355,8 @@ TEST(KeyMap, DefaultsHoldTheBindingsOfUx) {
   EXPECT_EQ(keys.actionFor(GLFW_KEY_F, GLFW_MOD_CAPS_LOCK), Action::FrameModel);
   EXPECT_FALSE(keys.actionFor(GLFW_KEY_Q, 0).has_value());
   EXPECT_FALSE(keys.actionFor(GLFW_KEY_F, GLFW_MOD_ALT).has_value());
-  // docs/design/ux.md "Undo" and "Files": Ctrl+Z, Ctrl+Shift+Z (and Ctrl+Y), Ctrl+S; [ and ] step the brush.
+  // docs/design/ux.md "Undo" and "Files": Ctrl+Z, Ctrl+Shift+Z (and Ctrl+Y), Ctrl+S; [ and ] step
+  // the brush.
   EXPECT_EQ(keys.actionFor(GLFW_KEY_Z, GLFW_MOD_CONTROL), Action::Undo);
   EXPECT_EQ(keys.actionFor(GLFW_KEY_Z, GLFW_MOD_CONTROL | GLFW_MOD_SHIFT), Action::Redo);
   EXPECT_EQ(keys.actionFor(GLFW_KEY_Y, GLFW_MOD_CONTROL), Action::RedoAlternative);

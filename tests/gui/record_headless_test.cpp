@@ -36,7 +36,8 @@ Outcome run(const fs::path& dir, const std::string& args, const std::string& env
                               args + " > " + (dir / "out.txt").string() + " 2> " +
                               (dir / "err.txt").string();
   const int status = std::system(command.c_str());
-  return {WIFEXITED(status) ? WEXITSTATUS(status) : -1, slurp(dir / "out.txt"), slurp(dir / "err.txt")};
+  return {WIFEXITED(status) ? WEXITSTATUS(status) : -1, slurp(dir / "out.txt"),
+          slurp(dir / "err.txt")};
 }
 
 std::string lastLine(const std::string& text) {
@@ -53,9 +54,10 @@ TEST(RecordHeadless, WritesAPngSequenceAndAnH264VideoOfTheTake) {
       << "ffprobe (ffmpeg) is missing: scripts/install-deps.sh installs ffmpeg";
   sculpt::test::ScratchDirectory scratch("record_headless");
   const fs::path dir = scratch.path();
-  const Outcome r = run(dir, "--headless --scene " + kScene + " --size 320x240 --record-seconds 1 --fps 10" +
-                             " --record-out " + (dir / "frame_####.png").string() +
-                             " --record-out " + (dir / "take.mp4").string());
+  const Outcome r =
+      run(dir, "--headless --scene " + kScene + " --size 320x240 --record-seconds 1 --fps 10" +
+                   " --record-out " + (dir / "frame_####.png").string() + " --record-out " +
+                   (dir / "take.mp4").string());
   ASSERT_EQ(r.status, 0) << r.err;
   std::printf("[ output ] %s\n", lastLine(r.out).c_str());
   EXPECT_EQ(lastLine(r.out).rfind("frames=11 seconds=1 vertices=", 0), 0u) << r.out;
@@ -92,8 +94,9 @@ TEST(RecordHeadless, Mp4WithoutFfmpegIsOneSentenceAndExitStatus2) {
   const Outcome r = run(dir, "--headless --scene " + kScene + " --size 320x240 --record-seconds 1" +
                              " --record-out " + video.string(), "PATH=" + (dir / "empty").string());
   EXPECT_EQ(r.status, 2);
-  EXPECT_EQ(r.err, "error: " + video.string() +
-                       ": writing .mp4 needs the ffmpeg program (scripts/install-deps.sh installs it)\n");
+  EXPECT_EQ(r.err,
+            "error: " + video.string() +
+                ": writing .mp4 needs the ffmpeg program (scripts/install-deps.sh installs it)\n");
   EXPECT_FALSE(fs::exists(video));
 }
 

@@ -35,7 +35,9 @@ struct FrameTimes {
     return sorted.empty() ? 0.0 : sorted[sorted.size() / 2];
   }
   double max() const { return ms.empty() ? 0.0 : *std::max_element(ms.begin(), ms.end()); }
-  size_t argmax() const { return static_cast<size_t>(std::max_element(ms.begin(), ms.end()) - ms.begin()); }
+  size_t argmax() const {
+    return static_cast<size_t>(std::max_element(ms.begin(), ms.end()) - ms.begin());
+  }
 };
 
 double timedFrame(SculptApp& app) {
@@ -69,7 +71,8 @@ TEST(RecordWindow, RecordsScrubsAndExportsWithoutStallingTheWindow) {
     options.cage = 4;  // a coarser cage: quicker steps and exports
     SculptApp app(window, options, Clock::now(), LoadedPreferences{},
                   scratch.path() / "preferences.json");
-    for (int k = 0; k < 400 && !(app.sceneView().hasGeometry() && app.sceneView().frame().physicsReady); ++k)
+    for (int k = 0;
+         k < 400 && !(app.sceneView().hasGeometry() && app.sceneView().frame().physicsReady); ++k)
       app.headlessFrame();
     ASSERT_TRUE(app.sceneView().frame().physicsReady);
 
@@ -139,7 +142,8 @@ TEST(RecordWindow, RecordsScrubsAndExportsWithoutStallingTheWindow) {
     }
     ASSERT_FALSE(app.exportJob().busy());
     ASSERT_TRUE(app.lastExport().has_value());
-    EXPECT_EQ(app.lastExport()->kind, ExportJob::Outcome::Kind::Cancelled) << app.lastExport()->error;
+    EXPECT_EQ(app.lastExport()->kind, ExportJob::Outcome::Kind::Cancelled)
+        << app.lastExport()->error;
     EXPECT_FALSE(fs::exists(glb));
     EXPECT_TRUE(filesIn(folder).empty()) << "left behind: " << filesIn(folder).front();
     EXPECT_TRUE(hasToast(app.model(), "Export cancelled; nothing was written"));
@@ -165,7 +169,8 @@ TEST(RecordWindow, RecordsScrubsAndExportsWithoutStallingTheWindow) {
     // window's priority, on its own thread, and never holds what the frame needs. (ctest runs
     // this test with nothing beside it: another process on the second core would be measured
     // too.)
-    for (const auto& [name, times] : {std::pair{"cancelled export", &cancelled}, std::pair{"export", &written}}) {
+    for (const auto& [name, times] :
+         {std::pair{"cancelled export", &cancelled}, std::pair{"export", &written}}) {
       const double median = times->median();
       size_t over = 0;
       std::string all;
@@ -238,14 +243,17 @@ TEST(RecordWindow, RecordsScrubsAndExportsWithoutStallingTheWindow) {
     const ViewRect view = app.viewRect();
     ASSERT_TRUE(exportTo(rendered / "view.mp4", 10, 100));
     ASSERT_EQ(app.lastExport()->kind, ExportJob::Outcome::Kind::Written) << app.lastExport()->error;
-    const std::string probe = "ffprobe -v error -select_streams v:0 -count_frames -show_entries "
-                              "stream=codec_name,width,height,pix_fmt,nb_read_frames -of csv=p=0 " +
-                              (rendered / "view.mp4").string() + " > " + (rendered / "probe.txt").string();
-    ASSERT_EQ(std::system(probe.c_str()), 0) << "ffprobe is missing: scripts/install-deps.sh installs ffmpeg";
+    const std::string probe =
+        "ffprobe -v error -select_streams v:0 -count_frames -show_entries "
+        "stream=codec_name,width,height,pix_fmt,nb_read_frames -of csv=p=0 " +
+        (rendered / "view.mp4").string() + " > " + (rendered / "probe.txt").string();
+    ASSERT_EQ(std::system(probe.c_str()), 0)
+        << "ffprobe is missing: scripts/install-deps.sh installs ffmpeg";
     std::ifstream probed(rendered / "probe.txt");
     std::string streams;
     std::getline(probed, streams);
-    const int w = static_cast<int>(view.max.x - view.min.x) & ~1, h = static_cast<int>(view.max.y - view.min.y) & ~1;
+    const int w = static_cast<int>(view.max.x - view.min.x) & ~1,
+              h = static_cast<int>(view.max.y - view.min.y) & ~1;
     EXPECT_EQ(streams, "h264," + std::to_string(w) + "," + std::to_string(h) + ",yuv420p," +
                            std::to_string((take->frameCount() - 1) / 10 + 1));
     std::printf("[ measured ] rendered: %u PNG frames, video %s\n", pngFrames, streams.c_str());

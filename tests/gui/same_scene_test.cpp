@@ -60,15 +60,19 @@ class SameScene : public ::testing::Test {
     const fs::path a = dir_ / "cli.vtk", b = dir_ / "window.vtk";
     ASSERT_EQ(run(kCli + " simulate " + scene + " --dt 0.0166667 --steps " + std::to_string(steps) +
                   " --script " + script + " --out " + a.string()), 0);
-    ASSERT_EQ(run(kSculpt + " --headless --size 320x200 --scene " + scene + " --dt 0.0166667 --script " +
-                  script + " --frames " + std::to_string(steps) + " --out " + b.string()), 0);
+    ASSERT_EQ(
+        run(kSculpt + " --headless --size 320x200 --scene " + scene + " --dt 0.0166667 --script " +
+            script + " --frames " + std::to_string(steps) + " --out " + b.string()),
+        0);
     const std::vector<double> cli = vtkPoints(a), window = vtkPoints(b);
     ASSERT_FALSE(cli.empty());
     ASSERT_EQ(cli.size(), window.size());
     double difference = 0.0;
-    for (size_t i = 0; i < cli.size(); ++i) difference = std::max(difference, std::abs(cli[i] - window[i]));
-    std::printf("[ measured ] %s: %zu control points, max |cli - window| = %.3g m (model size %.3g m)\n",
-                scene.c_str(), cli.size() / 3, difference, size);
+    for (size_t i = 0; i < cli.size(); ++i)
+      difference = std::max(difference, std::abs(cli[i] - window[i]));
+    std::printf(
+        "[ measured ] %s: %zu control points, max |cli - window| = %.3g m (model size %.3g m)\n",
+        scene.c_str(), cli.size() / 3, difference, size);
     (void)size;
     EXPECT_EQ(difference, 0.0);
     EXPECT_EQ(cli, window) << "bit for bit";

@@ -74,7 +74,8 @@ class SculptSession : public ::testing::Test {
   // Window coordinates of a world point in the 3D view.
   ImVec2 screen(const Eigen::Vector3d& world) const {
     const ViewRect view = app_->viewRect();
-    const int w = static_cast<int>(view.max.x - view.min.x), h = static_cast<int>(view.max.y - view.min.y);
+    const int w = static_cast<int>(view.max.x - view.min.x),
+              h = static_cast<int>(view.max.y - view.min.y);
     const glm::vec3 p = app_->camera().project(glm::vec3(world.x(), world.y(), world.z()), w, h);
     return ImVec2(view.min.x + p.x, view.min.y + p.y);
   }

@@ -1,6 +1,7 @@
-// The window driven like a person would (gui/sculpt_session.h). It pulls the bunny, paints a stiff ear, extrudes a face of the cage and undoes it, checking the
-// effect of each step on the scene and on the project. With SCULPT_SESSION_IMAGES set to a
-// folder, each step's screenshot is written there (the README's images come from this test).
+// The window driven like a person would (gui/sculpt_session.h). It pulls the bunny, paints a stiff
+// ear, extrudes a face of the cage and undoes it, checking the effect of each step on the scene and
+// on the project. With SCULPT_SESSION_IMAGES set to a folder, each step's screenshot is written
+// there (the README's images come from this test).
 
 #include "render/gl.h"
 #define GLFW_INCLUDE_NONE
@@ -279,11 +280,13 @@ TEST_F(SculptSession, InflatePinCurveSaveAndOpenOnBlock3) {
   app_->model().tools.operation = TopologyTool::Extrude;
   app_->model().tools.mirrorX = true;
   const glm::vec3 right = app_->camera().right();
-  const Eigen::Vector3d faceCentre = bestFaceCentre(
-      app_->document().project().controlMesh, [&](const Eigen::Vector3d& c, const Eigen::Vector3d& n) {
-        if (std::abs(n.x()) < 0.99) return std::numeric_limits<double>::quiet_NaN();  // across x
-        return n.dot(Eigen::Vector3d(right.x, right.y, right.z)) - 0.01 * c.norm();
-      });
+  const Eigen::Vector3d faceCentre =
+      bestFaceCentre(app_->document().project().controlMesh,
+                     [&](const Eigen::Vector3d& c, const Eigen::Vector3d& n) {
+                       if (std::abs(n.x()) < 0.99)
+                         return std::numeric_limits<double>::quiet_NaN();  // across x
+                       return n.dot(Eigen::Vector3d(right.x, right.y, right.z)) - 0.01 * c.norm();
+                     });
   const ImVec2 faceAt = screen(faceCentre);
   pointer_ = Pointer{faceAt.x, faceAt.y};
   frames(2);
@@ -413,17 +416,17 @@ TEST_F(SculptSession, StrokesOfATakeAreMarkedOnTheTimelineAndSavedAsAScriptThatR
   EXPECT_EQ(types["inflate"], 1) << "held still: one press";
   EXPECT_GE(types["pin"], 2);
   EXPECT_EQ(types["curve"], 1);
-  const auto inflate = std::find_if(script.events.begin(), script.events.end(), [](const ScriptEvent& e) {
-    return std::holds_alternative<InflateEvent>(e.action);
-  });
+  const auto inflate = std::find_if(
+      script.events.begin(), script.events.end(),
+      [](const ScriptEvent& e) { return std::holds_alternative<InflateEvent>(e.action); });
   ASSERT_NE(inflate, script.events.end());
   EXPECT_GT(std::get<InflateEvent>(inflate->action).duration, 0.05) << "held for 8 frames";
   EXPECT_EQ(app_->model().record.marks.size(), script.events.size()) << "each is marked";
 
   // The timeline with its marks (hovered: the tooltip counts them), and the script saved.
   const fs::path glb = folder_ / "take.glb";
-  std::snprintf(app_->model().exportDialog.path.data(), app_->model().exportDialog.path.size(), "%s",
-                glb.c_str());
+  std::snprintf(app_->model().exportDialog.path.data(), app_->model().exportDialog.path.size(),
+                "%s", glb.c_str());
   app_->model().requests.record.saveScript = true;
   frames(1);
   const fs::path saved = folder_ / "take_script.json";

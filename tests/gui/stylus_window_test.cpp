@@ -43,7 +43,8 @@ TEST(StylusWindow, SimulatedDeviceMidPullShowsTheForceInTheMeterAndTheBackground
       io.MousePos = mouse;
       io.MouseDown[0] = left;
     });
-    for (int k = 0; k < 200 && !(app.sceneView().hasGeometry() && app.sceneView().frame().physicsReady); ++k)
+    for (int k = 0;
+         k < 200 && !(app.sceneView().hasGeometry() && app.sceneView().frame().physicsReady); ++k)
       app.headlessFrame();
     ASSERT_TRUE(app.sceneView().frame().physicsReady);
     for (int k = 0; k < 100 && !app.stylus().active(); ++k) app.headlessFrame();
@@ -55,17 +56,20 @@ TEST(StylusWindow, SimulatedDeviceMidPullShowsTheForceInTheMeterAndTheBackground
     rest.col(1).minCoeff(&low);
     const Eigen::Vector3d grab = rest.row(low).transpose() + Eigen::Vector3d(0, 0.3, 0);
     const ViewRect view = app.viewRect();
-    const int w = static_cast<int>(view.max.x - view.min.x), h = static_cast<int>(view.max.y - view.min.y);
+    const int w = static_cast<int>(view.max.x - view.min.x),
+              h = static_cast<int>(view.max.y - view.min.y);
     const glm::vec3 p = app.camera().project(glm::vec3(grab.x(), grab.y(), grab.z()), w, h);
     mouse = ImVec2(view.min.x + p.x, view.min.y + p.y);
     app.headlessFrame();  // hover: the depth under the cursor
     left = true;
     const ImVec2 start = mouse;
     double strongest = 0;
-    // The picture is taken mid-drag at a frame that starts with the force felt above 0.5 N (on a loaded
-    // machine some probes are older than the safety's 100 ms and the force fades between them).
+    // The picture is taken mid-drag at a frame that starts with the force felt above 0.5 N (on a
+    // loaded machine some probes are older than the safety's 100 ms and the force fades between
+    // them).
     const char* images = std::getenv("SCULPT_SESSION_IMAGES");
-    const fs::path shot = (images ? fs::path(images) : scratch.path()) / "stylus-simulated-pull.png";
+    const fs::path shot =
+        (images ? fs::path(images) : scratch.path()) / "stylus-simulated-pull.png";
     bool taken = false;
     for (int k = 1; k <= 80 && !taken; ++k) {
       mouse = ImVec2(start.x + 5.0f * static_cast<float>(std::min(k, 40)), start.y);

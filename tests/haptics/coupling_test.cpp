@@ -16,7 +16,8 @@ DeviceInfo touch() { return MockPhantom::modelInfo(PhantomModel::kTouch); }
 
 TEST(Coupling, TheHandFeelsTheOppositeOfTheSolidsForceScaledAndRotated) {
   WorkspaceMapping mapping = WorkspaceMapping::fit(0.075, Eigen::Vector3d(1, 2, 3), 7.5);
-  mapping.rotation = Eigen::Quaterniond(Eigen::AngleAxisd(0.7, Eigen::Vector3d(1, 2, 3).normalized()));
+  mapping.rotation =
+      Eigen::Quaterniond(Eigen::AngleAxisd(0.7, Eigen::Vector3d(1, 2, 3).normalized()));
   ProbeStroke stroke;
   stroke.point = Eigen::Vector3d(1.2, 2.1, 2.9);
   stroke.stiffness = 5.0e4;

@@ -45,7 +45,8 @@ TEST(DeformedBoundary, FindsTheFaceOfAUnitCubeAndItsDepth) {
   EXPECT_GT(boundary.numTriangles(), 0u);
   Points nodes;
   model->nodesFromControl(model->restControl(), nodes);
-  const Eigen::Vector3d lo = nodes.colwise().minCoeff().transpose(), hi = nodes.colwise().maxCoeff().transpose();
+  const Eigen::Vector3d lo = nodes.colwise().minCoeff().transpose(),
+                        hi = nodes.colwise().maxCoeff().transpose();
   const Eigen::Vector3d centre = 0.5 * (lo + hi);
   // Just inside the top face, near its middle: the hit is on that face, facing +y.
   const Eigen::Vector3d inside(centre.x(), hi.y() - 0.01, centre.z());
@@ -54,13 +55,15 @@ TEST(DeformedBoundary, FindsTheFaceOfAUnitCubeAndItsDepth) {
   EXPECT_LT(hit->signedDistance, 0);
   EXPECT_GT(hit->normal.y(), 0.9);
   // Outside above it: positive distance.
-  const std::optional<BoundaryHit> above = boundary.nearest(nodes, Eigen::Vector3d(centre.x(), hi.y() + 0.3, centre.z()));
+  const std::optional<BoundaryHit> above =
+      boundary.nearest(nodes, Eigen::Vector3d(centre.x(), hi.y() + 0.3, centre.z()));
   ASSERT_TRUE(above);
   EXPECT_GT(above->signedDistance, 0.25);
   // Translating the solid translates the hit.
   Points moved = nodes;
   moved.col(1).array() += 0.5;
-  const std::optional<BoundaryHit> shifted = boundary.nearest(moved, inside + Eigen::Vector3d(0, 0.5, 0));
+  const std::optional<BoundaryHit> shifted =
+      boundary.nearest(moved, inside + Eigen::Vector3d(0, 0.5, 0));
   ASSERT_TRUE(shifted);
   EXPECT_NEAR((shifted->point - hit->point - Eigen::Vector3d(0, 0.5, 0)).norm(), 0.0, 1e-12);
   // The rest point of the hit lies on the rest boundary.

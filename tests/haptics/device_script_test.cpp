@@ -229,8 +229,11 @@ TEST(DeviceScript, TheShippedScriptsLoadWithTheirToolsAndAForeignFormatIsRefused
   const DeviceScript probe = loadDeviceScript(assets / "device_probe.json");
   EXPECT_EQ(probe.tool, "probe");
   for (const ScriptKey& key : probe.keys) EXPECT_EQ(key.buttons, 0u) << "probed with the button up";
-  nlohmann::json bad = {{"format", "sculpt-session"}, {"version", 1}, {"model", "touch"},
-                        {"mode", "trajectory"}, {"keys", {{{"t", 0}, {"position", {0, 0, 0}}, {"buttons", 0}}}}};
+  nlohmann::json bad = {{"format", "sculpt-session"},
+                        {"version", 1},
+                        {"model", "touch"},
+                        {"mode", "trajectory"},
+                        {"keys", {{{"t", 0}, {"position", {0, 0, 0}}, {"buttons", 0}}}}};
   EXPECT_THROW(parseDeviceScript(bad), std::runtime_error);
   bad["format"] = "sculpt-device-script";
   EXPECT_NO_THROW(parseDeviceScript(bad));

@@ -28,8 +28,9 @@ struct BlockScene {
   explicit BlockScene() {
     SceneSettings settings;
     settings.gravity = Eigen::Vector3d::Zero();
-    controller.load(SceneSource(SceneKind::ControlMesh, std::string(SCULPT_SOURCE_DIR) + "/assets/block3.json"),
-                    settings);
+    controller.load(
+        SceneSource(SceneKind::ControlMesh, std::string(SCULPT_SOURCE_DIR) + "/assets/block3.json"),
+        settings);
     scene.centre = Eigen::Vector3d(1.5, 1.5, 1.5);
     scene.radius = std::sqrt(27.0) / 2;
     scene.youngs = settings.material.youngs;
@@ -40,7 +41,8 @@ struct BlockScene {
     PinStroke::Settings pins;
     pins.box = Eigen::AlignedBox3d(Eigen::Vector3d(-1, -1, -1), Eigen::Vector3d(4, 4, 0.1));
     const ToolInput anywhere;
-    const uint64_t stroke = controller.loop().beginStroke(std::make_unique<PinStroke>(pins), anywhere);
+    const uint64_t stroke =
+        controller.loop().beginStroke(std::make_unique<PinStroke>(pins), anywhere);
     controller.loop().endStroke(stroke, anywhere);
     return true;
   }
@@ -160,7 +162,9 @@ TEST(StylusEndToEnd, APullMovesTheSolidWithEqualAndOppositeForcesAndUnpluggingZe
   bool seen = false;
   for (const ServoRecord& r : records) {
     if (r.connected) continue;
-    if (!seen) std::printf("[ measured ] first unplugged tick at %.4f s: |F| = %g N\n", r.time, r.commanded.norm());
+    if (!seen)
+      std::printf("[ measured ] first unplugged tick at %.4f s: |F| = %g N\n", r.time,
+                  r.commanded.norm());
     seen = true;
     EXPECT_EQ(r.commanded.norm(), 0.0) << "at " << r.time;
   }
@@ -181,7 +185,8 @@ TEST(StylusEndToEnd, ProbingARegionPaintedTenTimesStifferPushesBackHarder) {
   paint.brush.mirror.x = false;  // the default mirrors across x = 1.5, onto the other probe
   ToolInput at;
   at.restPoint = Eigen::Vector3d(0.6, 1.0, 3.0);
-  const uint64_t painted = block.controller.loop().beginStroke(std::make_unique<PaintStroke>(paint), at);
+  const uint64_t painted =
+      block.controller.loop().beginStroke(std::make_unique<PaintStroke>(paint), at);
   block.controller.loop().endStroke(painted, at);
 
   // Press the stylus 0.2 m (scene) into the face at x = 0.6 (stiff), withdraw, the same at
@@ -213,7 +218,8 @@ TEST(StylusEndToEnd, ProbingARegionPaintedTenTimesStifferPushesBackHarder) {
     return n > 100 ? sum / n : 0.0;
   };
   const double stiff = meanForce(1.1, 1.6), soft = meanForce(3.0, 3.5);
-  std::printf("[ measured ] probe 0.2 m deep: painted 10x stiffer %.3f N, as painted %.3f N\n", stiff, soft);
+  std::printf("[ measured ] probe 0.2 m deep: painted 10x stiffer %.3f N, as painted %.3f N\n",
+              stiff, soft);
   ASSERT_GT(soft, 0.02) << "the contact pushes back";
   // 1.6x in Release, and under both sanitizers with the script paced (1.17x under
   // ThreadSanitizer before the pacing). The margin asked for stays small: larger, not a

@@ -60,8 +60,9 @@ TEST(GltfNesting, DeepNestingIsOneSentenceAndOrdinaryDepthsParse) {
     const std::string json = nestedDocument(20000);
     const fs::path path = write(name, std::string(name).ends_with(".glb") ? glbOf(json) : json);
     const std::string error = readError(path);
-    EXPECT_NE(error.find(std::string(name) + ": not valid glTF (its JSON nests deeper than 512 levels"),
-              std::string::npos)
+    EXPECT_NE(
+        error.find(std::string(name) + ": not valid glTF (its JSON nests deeper than 512 levels"),
+        std::string::npos)
         << error;
   }
   // 300 levels reach the parser and then the reader, which finds no surface in the document.

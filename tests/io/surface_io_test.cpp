@@ -535,7 +535,8 @@ TEST_F(SurfaceIoTest, GltfOutputOfGltfInputAsObj) {
 
 TEST_F(SurfaceIoTest, WrittenFilesPassTheKhronosValidator) {
   const auto script = test::gltfValidatorScript();
-  ASSERT_FALSE(script.empty()) << "the glTF validator is missing: run scripts/install-gltf-validator.sh";
+  ASSERT_FALSE(script.empty())
+      << "the glTF validator is missing: run scripts/install-gltf-validator.sh";
   ASSERT_EQ(std::system("node --version > /dev/null 2>&1"), 0)
       << "node is missing: scripts/install-deps.sh installs it";
 

@@ -420,7 +420,8 @@ TEST(Validation, AssetsAreClean) {
     SCOPED_TRACE(entry.path().filename().string());
     {  // the mock stylus' device scripts live here too (docs/file-formats.md)
       std::ifstream in(entry.path());
-      const std::string text((std::istreambuf_iterator<char>(in)), std::istreambuf_iterator<char>());
+      const std::string text((std::istreambuf_iterator<char>(in)),
+                             std::istreambuf_iterator<char>());
       if (text.find("\"format\": \"sculpt-device-script\"") != std::string::npos) continue;
     }
     CellComplex m;

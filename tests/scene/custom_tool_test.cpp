@@ -25,7 +25,8 @@ class StylusPushTool : public Tool {
   explicit StylusPushTool(double maxForce) : maxForce_(maxForce) {}
   const char* name() const override { return "stylus push"; }
   void begin(ToolContext& context, const ToolInput& input) override {
-    std::optional<MaterialPoint> point = context.locator().locate(restPointOf(context, input, name()));
+    std::optional<MaterialPoint> point =
+        context.locator().locate(restPointOf(context, input, name()));
     if (!point) throw std::invalid_argument("stylus push: nothing there.");
     point_ = *point;
     simulator_ = &context.simulator();
@@ -54,7 +55,8 @@ class StylusPushTool : public Tool {
     const Eigen::Quaterniond q = input.orientation.value_or(Eigen::Quaterniond::Identity());
     force_ = maxForce_ * input.pressure * (q * Eigen::Vector3d::UnitZ());
     clear();
-    form_ = simulator_->addLoad(std::make_unique<PointForceForm>(simulator_->model(), point_, force_));
+    form_ =
+        simulator_->addLoad(std::make_unique<PointForceForm>(simulator_->model(), point_, force_));
   }
   double maxForce_;
   MaterialPoint point_;
@@ -114,7 +116,8 @@ TEST(CustomTool, AToolDefinedInATestDrivesTheRunningScene) {
     }
     EXPECT_TRUE(controller.buildStatus().error.empty()) << controller.buildStatus().error;
   }
-  std::printf("[ measured ] mean control x after the push: %.4f pushed, %.4f free\n", pushedX, freeX);
+  std::printf("[ measured ] mean control x after the push: %.4f pushed, %.4f free\n", pushedX,
+              freeX);
   EXPECT_GT(pushedX, freeX + 0.01);
 }
 

@@ -159,9 +159,9 @@ TEST(SceneController, DefaultBunnyBuildsHangsAndKeepsItsPins) {
   // Hanging under gravity: the lowest surface point has moved down.
   const Points moved = linearSurface(*g, frame.nodes);
   const double height = rest.col(1).maxCoeff() - rest.col(1).minCoeff();
-  std::printf("[ measured ] lowest point after %.2f s: %.4f (rest %.4f, height %.2f), step %.1f ms\n",
-              frame.simulatedTime, moved.col(1).minCoeff(), rest.col(1).minCoeff(), height,
-              frame.stepMs);
+  std::printf(
+      "[ measured ] lowest point after %.2f s: %.4f (rest %.4f, height %.2f), step %.1f ms\n",
+      frame.simulatedTime, moved.col(1).minCoeff(), rest.col(1).minCoeff(), height, frame.stepMs);
   EXPECT_LT(moved.col(1).minCoeff(), rest.col(1).minCoeff() - 1e-3 * height);
   // Pinned control points have not moved at all; the others have.
   double freeMotion = 0.0;
@@ -301,8 +301,10 @@ TEST(SceneController, FieldsAreUniformMaterialAndStrainEnergySplitsByElement) {
     sumDensities += physics->elementStrainEnergyDensity()[e] * physics->elementVolume()[e];
     volume += physics->elementVolume()[e];
   }
-  std::printf("[ measured ] block3 after 10 steps: elastic energy %.9g J, sum of densities x volumes "
-              "%.9g J\n", total, sumDensities);
+  std::printf(
+      "[ measured ] block3 after 10 steps: elastic energy %.9g J, sum of densities x volumes "
+      "%.9g J\n",
+      total, sumDensities);
   ASSERT_GT(total, 0.0);
   EXPECT_NEAR(sumTerms, total, 1e-12 * total);
   EXPECT_NEAR(sumDensities, total, 1e-9 * total);
@@ -315,7 +317,8 @@ TEST(SceneController, FieldsAreUniformMaterialAndStrainEnergySplitsByElement) {
   physics->fillFrame(own);
   for (size_t c = 0; c < own.cellStrainEnergy.size(); ++c)
     ASSERT_EQ(own.cellStrainEnergy[c],
-              static_cast<float>(physics->elementStrainEnergyDensity()[physics->geometry().cellElement[c]]));
+              static_cast<float>(
+                  physics->elementStrainEnergyDensity()[physics->geometry().cellElement[c]]));
 }
 
 TEST(SceneController, ShowingTheStrainEnergyChangesNoBitOfTheMotion) {
@@ -476,7 +479,8 @@ TEST(SceneController, BadFilesReportASentenceAndKeepTheScene) {
   fs::create_directories(dir);
   {
     std::ofstream(dir / "broken.obj") << "v 0 0 0\nv 1 0 0\nf 1 2 7\n";
-    std::ofstream(dir / "broken.json") << "{\"format\": \"sculpt-control-mesh\", \"vertices\": [[0,0";
+    std::ofstream(dir / "broken.json")
+        << "{\"format\": \"sculpt-control-mesh\", \"vertices\": [[0,0";
     std::ofstream(dir / "surface.xyz") << "0 0 0\n";
     std::ofstream(dir / "inverted.json")
         << R"({"format": "sculpt-control-mesh", "version": 1, "vertices": [[0,0,0],[1,0,0],[0,1,0],[0,0,1]],
@@ -556,7 +560,8 @@ TEST(SceneController, ControlMeshScenes) {
   ASSERT_TRUE(beam);
   const Points& p = beam->geometry->restPositions;
   for (Eigen::Index v = 0; v < p.rows(); ++v) {
-    const double toFace = std::min({p(v, 0), 10.0 - p(v, 0), p(v, 1), 1.0 - p(v, 1), p(v, 2), 1.0 - p(v, 2)});
+    const double toFace =
+        std::min({p(v, 0), 10.0 - p(v, 0), p(v, 1), 1.0 - p(v, 1), p(v, 2), 1.0 - p(v, 2)});
     ASSERT_NEAR(toFace, 0.0, 1e-12) << "vertex " << v;
   }
   // house.json has pyramids: their tetrahedra carry the pyramid elements of their faces.
@@ -631,13 +636,14 @@ TEST(SceneController, ImportedSurfacesAreCagedAndDrawnAsIs) {
   // A cube of quadrilaterals, fanned into 12 triangles, in a cage of about 4 cells across.
   const fs::path dir = fs::temp_directory_path() / "sculpt_scene_controller_import";
   fs::create_directories(dir);
-  std::ofstream(dir / "cube.obj") << "v 0 0 0\nv 1 0 0\nv 1 1 0\nv 0 1 0\nv 0 0 1\nv 1 0 1\nv 1 1 1\n"
-                                     "v 0 1 1\nf 1 4 3 2\nf 5 6 7 8\nf 1 2 6 5\nf 2 3 7 6\n"
-                                     "f 3 4 8 7\nf 4 1 5 8\n";
+  std::ofstream(dir / "cube.obj")
+      << "v 0 0 0\nv 1 0 0\nv 1 1 0\nv 0 1 0\nv 0 0 1\nv 1 0 1\nv 1 1 1\n"
+         "v 0 1 1\nf 1 4 3 2\nf 5 6 7 8\nf 1 2 6 5\nf 2 3 7 6\n"
+         "f 3 4 8 7\nf 4 1 5 8\n";
   SceneSettings settings;
   settings.cageCellsAcross = 4.0;
-  for (const auto& [path, triangles] :
-       {std::pair{(dir / "cube.obj").string(), size_t(12)}, std::pair{kAssets + "bunny.obj", size_t(3674)}}) {
+  for (const auto& [path, triangles] : {std::pair{(dir / "cube.obj").string(), size_t(12)},
+                                        std::pair{kAssets + "bunny.obj", size_t(3674)}}) {
     SCOPED_TRACE(path);
     SceneController controller(false);
     controller.load({SceneKind::ImportedSurface, path}, settings);
@@ -866,7 +872,8 @@ TEST(SceneControllerScript, GrabScriptPullsTheSolidAndResetEndsIt) {
       freeX = meanX(frame);
     }
   }
-  std::printf("[ measured ] mean control x after 20 steps: %.4f pulled, %.4f free\n", pulledX, freeX);
+  std::printf("[ measured ] mean control x after 20 steps: %.4f pulled, %.4f free\n", pulledX,
+              freeX);
   EXPECT_GT(pulledX, freeX + 0.05);
 }
 
@@ -922,8 +929,10 @@ TEST(SceneControllerThreaded, BrushEditsAreCapturedAndRestoredOnTheSimulationThr
     input.restPoint = rest;
     controller.loop().endStroke(controller.loop().beginStroke(std::move(tool), input), input);
   };
-  dab(std::make_unique<PaintStroke>(PaintStroke::Settings{brush, std::nullopt}), Eigen::Vector3d(1.5, 1.5, 1.5));
-  dab(std::make_unique<PinStroke>(PinStroke::Settings{0.1, std::nullopt}), Eigen::Vector3d(0.0, 0.0, 0.0));
+  dab(std::make_unique<PaintStroke>(PaintStroke::Settings{brush, std::nullopt}),
+      Eigen::Vector3d(1.5, 1.5, 1.5));
+  dab(std::make_unique<PinStroke>(PinStroke::Settings{0.1, std::nullopt}),
+      Eigen::Vector3d(0.0, 0.0, 0.0));
   const SceneEdits painted = capture();
   ASSERT_GT(before.materials.size(), 0u);
   ASSERT_EQ(painted.materials.size(), before.materials.size());

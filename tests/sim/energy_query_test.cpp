@@ -20,7 +20,8 @@ Points run(bool queryEveryStep) {
   SimulationSettings settings;
   settings.timeStep = 1.0 / 60.0;
   Simulator simulator(*model, settings);
-  simulator.fixInBox(Eigen::AlignedBox3d(Eigen::Vector3d(-1, -1, -1e-9), Eigen::Vector3d(2, 2, 1e-9)));
+  simulator.fixInBox(
+      Eigen::AlignedBox3d(Eigen::Vector3d(-1, -1, -1e-9), Eigen::Vector3d(2, 2, 1e-9)));
   simulator.addLoad(std::make_unique<GravityForm>(*model, Eigen::Vector3d(0.3, 0.0, -9.81)));
   for (int i = 0; i < 40; ++i) {
     simulator.step();

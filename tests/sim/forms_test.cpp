@@ -379,7 +379,8 @@ TEST(FormsTest, SpringAtItsTargetIsInEquilibrium) {
     // Moved target: the net force on the solid is k (target - x).
     const Eigen::Vector3d target = here + Eigen::Vector3d(0.1, -0.2, 0.3);
     spring.setTarget(target);
-    const Eigen::Vector3d net = -totalGradient(*s.model, spring, s.base).colwise().sum().transpose();
+    const Eigen::Vector3d net =
+        -totalGradient(*s.model, spring, s.base).colwise().sum().transpose();
     EXPECT_LT((net - 800.0 * (target - here)).norm(), 1e-10) << s.name;
   }
 }

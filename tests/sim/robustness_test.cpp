@@ -74,7 +74,9 @@ TEST_P(AbsurdInputs, NonFiniteForceIsRefusedAndTheStateKept) {
 
 INSTANTIATE_TEST_SUITE_P(BothIntegrators, AbsurdInputs,
                          ::testing::Values(Integrator::Paper, Integrator::Implicit),
-                         [](const auto& param) { return std::string(integratorName(param.param)); });
+                         [](const auto& param) {
+                           return std::string(integratorName(param.param));
+                         });
 
 TEST(SimulatorSettings, InvalidSettingsAreRefusedWithASentence) {
   FemModel model = absurdModel();

@@ -32,7 +32,8 @@ TEST(SessionScript, ParsesEveryEventType) {
      "stiffness": 1e6, "release": 1.5, "keep": true},
     {"t": 0.25, "type": "inflate", "centre": [1, 1, 1], "radius": 0.5, "pressure": -2000, "duration": 0.5},
     {"t": 0, "type": "paint", "centre": [1, 1, 1], "radius": 0.5, "youngs": 1e7, "falloff": "sharp", "mirror": "xz"},
-    {"t": 0, "type": "pin", "box": [[0, 0, 0], [3, 0.1, 3]], "unpin": true})"), "s.json");
+    {"t": 0, "type": "pin", "box": [[0, 0, 0], [3, 0.1, 3]], "unpin": true})"),
+                                                  "s.json");
   ASSERT_EQ(script.events.size(), 4u);
   const auto& grab = std::get<GrabEvent>(script.events[0].action);
   EXPECT_EQ(grab.stiffness, 1e6);
@@ -55,13 +56,16 @@ TEST(SessionScript, MalformedScriptsGiveOneSentenceNamingEventAndField) {
   const std::string pin = R"({"t": 0, "type": "pin", "box": [[0, 0, 0], [1, 1, 1]]})";
   struct Case { std::string text, message; };
   const Case cases[] = {
-      {wrap(pin).substr(0, 40), "s.json: not valid JSON (error at byte 41; truncated or malformed)."},
+      {wrap(pin).substr(0, 40),
+       "s.json: not valid JSON (error at byte 41; truncated or malformed)."},
       {"[]", "s.json: the top level must be a JSON object."},
-      {R"({"format": "mesh", "version": 1, "events": []})", "s.json: 'format' must be \"sculpt-session\"."},
+      {R"({"format": "mesh", "version": 1, "events": []})",
+       "s.json: 'format' must be \"sculpt-session\"."},
       {R"({"format": "sculpt-session", "version": 2, "events": []})",
        "s.json: 'version' is 2; this program reads version 1."},
       {wrap(pin + R"(, {"t": 1, "type": "explode"})"),
-       "s.json: events[1]: 'type' must be one of grab, inflate, paint, pin, curve, topology (got \"explode\")."},
+       "s.json: events[1]: 'type' must be one of grab, inflate, paint, pin, curve, topology (got "
+       "\"explode\")."},
       {wrap(R"({"t": "soon", "type": "pin", "box": [[0, 0, 0], [1, 1, 1]]})"),
        "s.json: events[0] (pin): 't' must be a finite number >= 0 (s) (got \"soon\")."},
       {wrap(R"({"t": 0, "type": "inflate", "pressure": 5, "duration": -1})"),
@@ -70,14 +74,19 @@ TEST(SessionScript, MalformedScriptsGiveOneSentenceNamingEventAndField) {
        "s.json: not valid JSON (a number is out of range, not finite)."},
       {wrap(R"({"t": 0, "type": "grab", "point": [1, 2], "path": [[0, 1, 1, 1]]})"),
        "s.json: events[0] (grab): 'point' must be an array of 3 finite numbers."},
-      {wrap(R"({"t": 0, "type": "grab", "point": [1, 2, 3], "path": [[1, 1, 1, 1], [0, 1, 1, 1]]})"),
-       "s.json: events[0] (grab): 'path[1]' must not go back in time (times must be non-decreasing)."},
+      {wrap(
+           R"({"t": 0, "type": "grab", "point": [1, 2, 3], "path": [[1, 1, 1, 1], [0, 1, 1, 1]]})"),
+       "s.json: events[0] (grab): 'path[1]' must not go back in time (times must be "
+       "non-decreasing)."},
       {wrap(R"({"t": 0, "type": "paint", "centre": [1, 1, 1], "radius": 1})"),
-       "s.json: events[0] (paint): a paint needs at least one of 'youngs', 'density', 'damping', 'poisson'."},
+       "s.json: events[0] (paint): a paint needs at least one of 'youngs', 'density', 'damping', "
+       "'poisson'."},
       {wrap(R"({"t": 0, "type": "paint", "centre": [1, 1, 1], "radius": 1, "density": 0})"),
        "s.json: events[0] (paint): 'density' must be a finite number > 0 (kg/m^3) (got 0)."},
-      {wrap(R"({"t": 0, "type": "paint", "centre": [1, 1, 1], "radius": 1, "youngs": 1e6, "falloff": "soft"})"),
-       "s.json: events[0] (paint): 'falloff' must be one of smooth, sphere, linear, sharp, constant (got \"soft\")."},
+      {wrap(
+           R"({"t": 0, "type": "paint", "centre": [1, 1, 1], "radius": 1, "youngs": 1e6, "falloff": "soft"})"),
+       "s.json: events[0] (paint): 'falloff' must be one of smooth, sphere, linear, sharp, "
+       "constant (got \"soft\")."},
       {wrap(R"({"t": 0, "type": "pin", "box": [[0, 0, 0], [1, 1, 1]], "colour": 1})"),
        "s.json: events[0] (pin): unknown field 'colour'."},
       {wrap("42"), "s.json: events[0]: must be a JSON object."},
@@ -109,7 +118,8 @@ namespace sculpt {
 namespace {
 
 TEST(SessionScriptNesting, DeeplyNestedFileIsRejectedBeforeParsing) {
-  const std::string text = "{\"events\": " + std::string(100000, '[') + std::string(100000, ']') + "}";
+  const std::string text =
+      "{\"events\": " + std::string(100000, '[') + std::string(100000, ']') + "}";
   try {
     parseSessionScript(text, "deep.json");
     FAIL() << "no error";

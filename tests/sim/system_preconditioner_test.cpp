@@ -196,7 +196,8 @@ TEST(SystemPreconditioner, EveryPointPinnedNeedsNoFactor) {
   EXPECT_LT(solveDifference(preconditioner, fresh, Eigen::Index(dofs.size()), 4), 1e-5);
 
   Simulator simulator(*model);
-  simulator.fixInBox(Eigen::AlignedBox3d(Eigen::Vector3d::Constant(-1), Eigen::Vector3d::Constant(4)));
+  simulator.fixInBox(
+      Eigen::AlignedBox3d(Eigen::Vector3d::Constant(-1), Eigen::Vector3d::Constant(4)));
   simulator.addLoad(std::make_unique<GravityForm>(*model, Eigen::Vector3d(0, -9.81, 0)));
   const StepReport report = simulator.step();
   EXPECT_TRUE(report.ok) << report.message;

@@ -36,8 +36,10 @@ std::unique_ptr<FemModel> paintedModel(const std::string& paintEvent) {
 TEST(MaterialBrush, FalloffPresetsHaveTheDocumentedWeights) {
   const double R = 2.0;
   struct Expect { Falloff f; double at0, atHalf, atR; };
-  const Expect table[] = {{Falloff::Smooth, 1, 0.5, 0},   {Falloff::Sphere, 1, std::sqrt(3.0) / 2, 0},
-                          {Falloff::Linear, 1, 0.5, 0},   {Falloff::Sharp, 1, 0.25, 0},
+  const Expect table[] = {{Falloff::Smooth, 1, 0.5, 0},
+                          {Falloff::Sphere, 1, std::sqrt(3.0) / 2, 0},
+                          {Falloff::Linear, 1, 0.5, 0},
+                          {Falloff::Sharp, 1, 0.25, 0},
                           {Falloff::Constant, 1, 1, 1}};
   for (const Expect& e : table) {
     SCOPED_TRACE(falloffName(e.f));

@@ -59,7 +59,8 @@ TEST(PhysicalTools, PullMovesThePointTowardTheTargetAndReleasesCleanly) {
   EXPECT_GT(pulled, 0.1 * unpulled) << "anchor " << anchor.transpose();
   EXPECT_EQ(pull->target(), target);
   // The force line: k |x - target| with the default stiffness 1.5 E h.
-  EXPECT_NEAR(pull->springForce(), defaultPullStiffness(*s.model) * pulled, 1e-9 * pull->springForce());
+  EXPECT_NEAR(pull->springForce(), defaultPullStiffness(*s.model) * pulled,
+              1e-9 * pull->springForce());
   EXPECT_NEAR(defaultPullStiffness(*s.model), 1.5 * 1e5 * 0.5, 0.05 * 1.5 * 1e5 * 0.5);
   EXPECT_GT(s.simulator->loadEnergy(), 0.0);
 
@@ -68,7 +69,8 @@ TEST(PhysicalTools, PullMovesThePointTowardTheTargetAndReleasesCleanly) {
   EXPECT_EQ(pull->springForce(), 0.0);
   EXPECT_EQ(s.simulator->loadEnergy(), 0.0);  // no load left
 
-  const double releasedOffset = (pointAt(*s.model, s.simulator->positions(), point) - anchor).norm();
+  const double releasedOffset =
+      (pointAt(*s.model, s.simulator->positions(), point) - anchor).norm();
   play(player, 5.0);
   const double relaxedOffset = (pointAt(*s.model, s.simulator->positions(), point) - anchor).norm();
   std::printf("pull: point to target %.4f m before, %.4f m held; offset %.4f m at release, "
@@ -89,7 +91,8 @@ TEST(PhysicalTools, PushMovesThePointAwayFromTheCursor) {
   const Eigen::Vector3d moved = pointAt(*s.model, s.simulator->positions(), point) - anchor;
   const Eigen::Vector3d drag = Eigen::Vector3d(2.5, 4, 1.5) - anchor;
   EXPECT_LT(moved.dot(drag), -0.5 * drag.squaredNorm() * 0.4);  // well against the drag
-  EXPECT_EQ(player.pullTool(1)->target(), Eigen::Vector3d(2.0 * anchor - Eigen::Vector3d(2.5, 4, 1.5)));
+  EXPECT_EQ(player.pullTool(1)->target(),
+            Eigen::Vector3d(2.0 * anchor - Eigen::Vector3d(2.5, 4, 1.5)));
 }
 
 double volumeAfterPressure(double pressure) {
@@ -136,7 +139,8 @@ double topBulge(bool paintStiff) {
 
 TEST(PhysicalTools, PaintedStiffRegionDeformsLessUnderTheSameLoad) {
   const double soft = topBulge(false), stiff = topBulge(true);
-  std::printf("top bulge under the same load: unpainted %.4g m, painted stiff %.4g m\n", soft, stiff);
+  std::printf("top bulge under the same load: unpainted %.4g m, painted stiff %.4g m\n", soft,
+              stiff);
   EXPECT_GT(soft, 0.0);
   EXPECT_GT(stiff, 0.0);
   EXPECT_LT(stiff, 0.2 * soft) << "soft " << soft << " stiff " << stiff;

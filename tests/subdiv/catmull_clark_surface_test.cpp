@@ -42,7 +42,8 @@ SurfaceMesh grid(int n) {
   for (int j = 0; j < n; ++j)
     for (int i = 0; i < n; ++i) {
       const uint32_t a = static_cast<uint32_t>(j * (n + 1) + i);
-      for (uint32_t c : {a, a + 1, a + 1 + static_cast<uint32_t>(n + 1), a + static_cast<uint32_t>(n + 1)})
+      for (uint32_t c :
+           {a, a + 1, a + 1 + static_cast<uint32_t>(n + 1), a + static_cast<uint32_t>(n + 1)})
         mesh.faces.values.push_back({c});
       mesh.faces.closeRow();
     }
@@ -70,7 +71,8 @@ TEST(CatmullClarkSurface, CountsPerLevelOnAClosedQuadMesh) {
     EXPECT_EQ(refined.numFaces(), 4 * F) << "level " << level;
     for (uint32_t f = 0; f < refined.numFaces(); ++f) ASSERT_EQ(refined.faces.row(f).size(), 4u);
     // Closed genus 0: V - E + F = 2.
-    const long euler = long(refined.numVertices()) - long(edges(refined).size()) + long(refined.numFaces());
+    const long euler =
+        long(refined.numVertices()) - long(edges(refined).size()) + long(refined.numFaces());
     EXPECT_EQ(euler, 2);
     EXPECT_EQ(triangulate(refined).size(), 6 * size_t(refined.numFaces()));
     previous = refined;
@@ -151,8 +153,9 @@ TEST(CatmullClarkSurface, PlanarGridStaysPlanarWithFixedCorners) {
     EXPECT_EQ(refined.positions.col(2).cwiseAbs().maxCoeff(), 0.0);
     // Edge-and-corner boundary rule: the grid's four corners stay put, and the boundary stays on
     // the square [0, 4]^2.
-    for (const Eigen::RowVector3d& corner : {Eigen::RowVector3d(0, 0, 0), Eigen::RowVector3d(4, 0, 0),
-                                            Eigen::RowVector3d(0, 4, 0), Eigen::RowVector3d(4, 4, 0)}) {
+    for (const Eigen::RowVector3d& corner :
+         {Eigen::RowVector3d(0, 0, 0), Eigen::RowVector3d(4, 0, 0), Eigen::RowVector3d(0, 4, 0),
+          Eigen::RowVector3d(4, 4, 0)}) {
       double nearest = 1e9;
       for (Eigen::Index v = 0; v < refined.positions.rows(); ++v)
         nearest = std::min(nearest, (refined.positions.row(v) - corner).norm());
@@ -183,7 +186,8 @@ TEST(CatmullClarkSurface, PolygonsAndTrianglesBecomeQuads) {
   SurfaceMesh pyramid;
   pyramid.positions.resize(5, 3);
   pyramid.positions << 0, 0, 0, 1, 0, 0, 1, 1, 0, 0, 1, 0, 0.5, 0.5, 1;
-  const std::vector<std::vector<uint32_t>> faces = {{0, 3, 2, 1}, {0, 1, 4}, {1, 2, 4}, {2, 3, 4}, {3, 0, 4}};
+  const std::vector<std::vector<uint32_t>> faces = {
+      {0, 3, 2, 1}, {0, 1, 4}, {1, 2, 4}, {2, 3, 4}, {3, 0, 4}};
   for (const auto& face : faces) {
     for (uint32_t c : face) pyramid.faces.values.push_back({c});
     pyramid.faces.closeRow();
@@ -197,7 +201,8 @@ TEST(CatmullClarkSurface, PolygonsAndTrianglesBecomeQuads) {
   const SurfaceMesh same = catmullClarkRefine(pyramid, 0, true);
   EXPECT_EQ(same.positions, pyramid.positions);
   const std::vector<uint32_t> triangles = triangulate(same);
-  EXPECT_EQ(triangles, (std::vector<uint32_t>{0, 3, 2, 0, 2, 1, 0, 1, 4, 1, 2, 4, 2, 3, 4, 3, 0, 4}));
+  EXPECT_EQ(triangles,
+            (std::vector<uint32_t>{0, 3, 2, 0, 2, 1, 0, 1, 4, 1, 2, 4, 2, 3, 4, 3, 0, 4}));
 }
 
 TEST(CatmullClarkSurface, RejectsBadInput) {

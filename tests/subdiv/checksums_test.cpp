@@ -1,4 +1,5 @@
-// docs/design/mj-subdivision.md §7.3: order-independent checksums over all vertices of the refined lattice.
+// docs/design/mj-subdivision.md §7.3: order-independent checksums over all vertices of the refined
+// lattice.
 
 #include <gtest/gtest.h>
 

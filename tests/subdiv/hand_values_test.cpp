@@ -1,5 +1,5 @@
-// docs/design/mj-subdivision.md §7.2 (hand-checkable point values), §7.1.3 (displaced centre) and §7.1.4
-// (linear precision). Points are located through the child numbering of mj_refiner.h.
+// docs/design/mj-subdivision.md §7.2 (hand-checkable point values), §7.1.3 (displaced centre) and
+// §7.1.4 (linear precision). Points are located through the child numbering of mj_refiner.h.
 
 #include <gtest/gtest.h>
 

@@ -1,5 +1,5 @@
-// docs/design/mj-subdivision.md §7.1.1 and §7.1.2: on a periodic hex lattice (3-torus) one MJ step is
-// exactly periodic tensor-product cubic B-spline refinement, and the stencils are the masks of
+// docs/design/mj-subdivision.md §7.1.1 and §7.1.2: on a periodic hex lattice (3-torus) one MJ step
+// is exactly periodic tensor-product cubic B-spline refinement, and the stencils are the masks of
 // §5.3. The expected values come from an independent 1D B-spline refinement, not from the
 // refiner.
 

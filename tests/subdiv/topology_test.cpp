@@ -1,6 +1,6 @@
-// docs/design/mj-subdivision.md §4 and §7.1.6: topology of MJ refinement. Single-cell table, the count
-// formulas of §4.2, the valences of §4.3, trapezohedra at pyramid apices, and closed, consistently
-// oriented, positive-volume cells at every level.
+// docs/design/mj-subdivision.md §4 and §7.1.6: topology of MJ refinement. Single-cell table, the
+// count formulas of §4.2, the valences of §4.3, trapezohedra at pyramid apices, and closed,
+// consistently oriented, positive-volume cells at every level.
 
 #include "mesh/topology.h"
 

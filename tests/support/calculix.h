@@ -4,7 +4,8 @@
 // A CalculiX (ccx) harness for tests: builds linear-elastic hexahedral models, writes a ccx
 // input deck, runs `ccx` in a private temporary directory and reads back the nodal
 // displacements. It exists so that our own mechanics can be compared against an independent,
-// established solver; it only depends on ccx being on PATH (tests fail when it is not: SCULPT_REQUIRE_CCX).
+// established solver; it only depends on ccx being on PATH (tests fail when it is not:
+// SCULPT_REQUIRE_CCX).
 //
 // Conventions: node ids are 0-based here and written as CalculiX node id + 1; element node
 // lists are in CalculiX/Abaqus order (C3D8: corners 1-4 counter-clockwise seen from +z on the
@@ -301,7 +302,8 @@ inline bool calculixAvailable() {
 }
 
 /// Fails the current test when ccx is missing (scripts/install-deps.sh installs it).
-#define SCULPT_REQUIRE_CCX() SCULPT_REQUIRE_TOOL(::sculpt::test::calculixAvailable(), "ccx (CalculiX)")
+#define SCULPT_REQUIRE_CCX() \
+  SCULPT_REQUIRE_TOOL(::sculpt::test::calculixAvailable(), "ccx (CalculiX)")
 
 namespace detail {
 

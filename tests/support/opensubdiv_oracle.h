@@ -1,9 +1,9 @@
 #pragma once
-// The MacCracken–Joy oracle of docs/design/mj-subdivision.md §5.4, §7.4: the boundary of the MJ-refined
-// lattice at levels 1..K equals OpenSubdiv's Catmull–Clark refinement of the level-0 boundary
-// (Sdc::SCHEME_CATMARK, creases as infinitely sharp edges, corners as infinitely sharp vertices),
-// point for point, to 1e-12 of the bounding-box diagonal. Test binaries that include this link
-// OpenSubdiv::osdCPU.
+// The MacCracken–Joy oracle of docs/design/mj-subdivision.md §5.4, §7.4: the boundary of the
+// MJ-refined lattice at levels 1..K equals OpenSubdiv's Catmull–Clark refinement of the level-0
+// boundary (Sdc::SCHEME_CATMARK, creases as infinitely sharp edges, corners as infinitely sharp
+// vertices), point for point, to 1e-12 of the bounding-box diagonal. Test binaries that include
+// this link OpenSubdiv::osdCPU.
 
 #include <gtest/gtest.h>
 #include <opensubdiv/far/primvarRefiner.h>
