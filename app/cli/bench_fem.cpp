@@ -26,7 +26,7 @@ namespace sculpt::cli {
 
 const std::vector<OptionSpec> kFemBenchOptions = {
     {"integrator", true}, {"model", true},       {"steps", true},
-    {"dt", true},         {"paint-every", true}, {"cage", true},
+    {"dt", true},         {"paint-every", true}, {"paint-from", true}, {"cage", true},
     {"paint-field", true}, {"pin-every", true}, {"fresh-factor", false}, {"as-window", false},
     {"trace", false}};
 
@@ -186,6 +186,7 @@ uint32_t fixedCount(const Simulator& simulator) {
 struct BenchRun {
   int steps = 0;
   int paintEvery = 0;
+  int paintFrom = 0;
   int pinEvery = 0;
   bool paintDensity = false;
   bool freshFactor = false;
@@ -207,7 +208,9 @@ int benchAndPrint(Simulator& simulator, const BenchRun& run, std::optional<doubl
   std::cout << "threads=" << workerCount() << " levels=" << run.levels
             << " integrator=" << integratorName(settings.integrator) << " dt=" << settings.timeStep
             << " steps=" << run.steps << " warmup=" << FemBenchOptions{}.warmupSteps
-            << " paint_every=" << run.paintEvery << (run.paintDensity ? " paint_field=density" : "")
+            << " paint_every=" << run.paintEvery
+            << (run.paintFrom > 0 ? " paint_from=" + std::to_string(run.paintFrom) : "")
+            << (run.paintDensity ? " paint_field=density" : "")
             << (run.pinEvery > 0 ? " pin_every=" + std::to_string(run.pinEvery) : "")
             << (run.freshFactor ? " fresh_factor=1" : "") << (run.asWindow ? " as_window=1" : "")
             << '\n'
@@ -218,6 +221,7 @@ int benchAndPrint(Simulator& simulator, const BenchRun& run, std::optional<doubl
   FemBenchOptions options;
   options.steps = run.steps;
   options.paintEvery = run.paintEvery;
+  options.paintFrom = run.paintFrom;
   options.paintDensity = run.paintDensity;
   options.pinEvery = run.pinEvery;
   options.freshFactor = run.freshFactor;
@@ -347,16 +351,17 @@ FemBenchFigures runFemBench(Simulator& simulator, const FemBenchOptions& options
   }
   // Before step `stepIndex` (warm-up or measured), the dab or pin edit due, outside the timing:
   // the step pays for what the edit changed.
-  auto editBefore = [&](int stepIndex, int& dabs, int& pinEdits) {
+  auto editBefore = [&](int stepIndex, bool measured) {
     bool edited = false;
-    if (painter && stepIndex % options.paintEvery == 0) {
+    const bool painting = options.paintFrom == 0 || (measured && stepIndex >= options.paintFrom);
+    if (painter && painting && stepIndex % options.paintEvery == 0) {
       painter->paintNext();
-      ++dabs;
+      ++(measured ? figures.dabs : figures.warmupDabs);
       edited = true;
     }
     if (pins && stepIndex % options.pinEvery == 0) {
       pins->toggle();
-      ++pinEdits;
+      ++(measured ? figures.pinEdits : figures.warmupPinEdits);
       edited = true;
     }
     if (edited && options.freshFactor) simulator.refactorPreconditioner();
@@ -370,7 +375,7 @@ FemBenchFigures runFemBench(Simulator& simulator, const FemBenchOptions& options
     figures.firstStepMs = millisecondsSince(start);
   }
   for (int i = 0; i < options.warmupSteps; ++i) {
-    editBefore(i, figures.warmupDabs, figures.warmupPinEdits);
+    editBefore(i, false);
     step();
   }
   // One elastic pass is timed before every measured step, so that the two medians share the
@@ -380,7 +385,7 @@ FemBenchFigures runFemBench(Simulator& simulator, const FemBenchOptions& options
   std::vector<double> samples, passSamples;
   long long iterations = 0;
   for (int i = 0; i < options.steps; ++i) {
-    editBefore(i, figures.dabs, figures.pinEdits);
+    editBefore(i, true);
     passSamples.push_back(passTimer.timeOnePass());
     const Clock::time_point start = Clock::now();
     const StepReport report = step();
@@ -420,6 +425,9 @@ int benchFemCommand(const CliArgs& args, std::string& file) {
   BenchRun run;
   run.steps = args.intValue("steps", 100, 1, 1'000'000);
   run.paintEvery = args.intValue("paint-every", 0, 1, 1'000'000);
+  run.paintFrom = args.intValue("paint-from", 0, 0, 1'000'000);
+  if (args.has("paint-from") && run.paintEvery == 0)
+    throw UsageError("--paint-from says when the dabs start: it needs --paint-every");
   run.pinEvery = args.intValue("pin-every", 0, 1, 1'000'000);
   run.freshFactor = args.has("fresh-factor");
   const std::string field = args.value("paint-field").value_or("youngs");

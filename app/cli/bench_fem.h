@@ -17,6 +17,9 @@ struct FemBenchOptions {
   int steps = 100;       ///< measured steps
   int warmupSteps = 3;   ///< untimed steps after the first one
   int paintEvery = 0;    ///< a stiffness dab before every N-th warm-up and measured step; 0: none
+  /// The dabs start at this measured step (none in the warm-up) where more than 0: painting
+  /// then begins from the factors a solid that has stood still has (the rest-stiffness one).
+  int paintFrom = 0;
   bool paintDensity = false;  ///< the dabs paint density (10x and 0.1x) instead of stiffness
   /// Before every N-th warm-up and measured step, the pin of the control points in the top
   /// quarter of the solid (by rest y) that no other pin holds: made, then released, and so on;

@@ -101,7 +101,7 @@ Eigen::VectorXd controlPointModulus(const FemMesh& mesh, std::span<const LamePar
 }
 
 SparseMatrix reducedLinearStiffness(const FemMesh& mesh, std::span<const LameParameters> lame,
-                                    const SparseMatrix& A) {
+                                    const SparseMatrix& A, std::span<const uint8_t> skip) {
   const QuadratureRule gauss2 = gaussLegendre(2);
   // A tricubic element's stand-in is integrated at points a quarter of the Gauss-Legendre
   // points' distance from the cell centre, with their weights: constant strains are still
@@ -112,9 +112,11 @@ SparseMatrix reducedLinearStiffness(const FemMesh& mesh, std::span<const LamePar
   const double standIn[2] = {0.5 + kStandInSpread * (gauss2.points[0] - 0.5),
                              0.5 + kStandInSpread * (gauss2.points[1] - 0.5)};
   const auto corners = [&](uint32_t e) { return elementCorners(mesh, e); };
-  SymmetricNodeBlocks nodes = symmetricNodePattern(mesh.numNodes(), mesh.numElements(), corners);
+  SymmetricNodeBlocks nodes =
+      symmetricNodePattern(mesh.numNodes(), mesh.numElements(), corners, skip);
   std::vector<uint32_t> where(mesh.numNodes());
   for (uint32_t e = 0; e < mesh.numElements(); ++e) {
+    if (!skip.empty() && skip[e]) continue;
     ElementStiffnessSum sum;
     const std::array<uint32_t, 8> ids = elementCorners(mesh, e);
     if (e < mesh.numTricubic()) {

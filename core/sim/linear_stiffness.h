@@ -19,8 +19,9 @@ namespace sculpt {
 SparseMatrix reducedLinearStiffness(const FemModel& model);
 /// The same for the Gauss-point materials `lame` (one per Gauss point of `mesh`), with A the
 /// control-to-node stencil matrix: usable on a copy of the materials away from the model.
+/// Elements with skip[e] are left out (none when skip is empty).
 SparseMatrix reducedLinearStiffness(const FemMesh& mesh, std::span<const LameParameters> lame,
-                                    const SparseMatrix& A);
+                                    const SparseMatrix& A, std::span<const uint8_t> skip = {});
 
 /// The 8 nodes of element e's stand-in: a trilinear or pyramid element's own, a tricubic
 /// element's cell corners (block [1,2]^3 of its 4^3 nodes), in trilinear order.

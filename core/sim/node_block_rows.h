@@ -41,12 +41,14 @@ inline void placeUpperRow(const SymmetricNodeBlocks& nodes, uint32_t n,
   for (uint32_t k = nodes.K.begin[n]; k < nodes.K.begin[n + 1]; ++k) where[nodes.K.column[k]] = k;
 }
 
-/// The pattern of elements whose nodes are nodesOf(e), e < numElements.
+/// The pattern of elements whose nodes are nodesOf(e), e < numElements, leaving out those with
+/// skip[e] (none when skip is empty).
 template <class NodesOf>
 SymmetricNodeBlocks symmetricNodePattern(uint32_t numNodes, uint32_t numElements,
-                                         const NodesOf& nodesOf) {
+                                         const NodesOf& nodesOf,
+                                         std::span<const uint8_t> skip = {}) {
   SymmetricNodeBlocks result;
-  result.around = nodeSlots(numNodes, numElements, nodesOf);
+  result.around = nodeSlots(numNodes, numElements, nodesOf, skip);
   const NodeSlots& around = result.around;
   NodeBlockRows& K = result.K;
   K.begin.reserve(size_t(numNodes) + 1);

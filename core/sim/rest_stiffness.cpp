@@ -113,9 +113,12 @@ class TricubicStiffness {
 }  // namespace
 
 SparseMatrix reducedRestStiffness(const FemMesh& mesh, std::span<const LameParameters> lame,
-                                  const SparseMatrix& A, const std::atomic<bool>* stop) {
+                                  const SparseMatrix& A, const std::atomic<bool>* stop,
+                                  std::span<const uint8_t> skip) {
+  const auto skipped = [&](uint32_t e) { return !skip.empty() && skip[e]; };
   SymmetricNodeBlocks nodes = symmetricNodePattern(
-      mesh.numNodes(), mesh.numElements(), [&](uint32_t e) { return mesh.elementNodes(e); });
+      mesh.numNodes(), mesh.numElements(), [&](uint32_t e) { return mesh.elementNodes(e); },
+      skip);
   NodeBlockRows& K = nodes.K;
   TricubicStiffness tricubic(mesh, lame);
   std::vector<uint32_t> where(mesh.numNodes());
@@ -126,6 +129,7 @@ SparseMatrix reducedRestStiffness(const FemMesh& mesh, std::span<const LameParam
   std::vector<TricubicStiffness::Element> shared(mesh.numTricubic());
   for (uint32_t e = 0; e < mesh.numTricubic(); ++e) {
     if (stop && e % 64 == 0 && *stop) return {};
+    if (skipped(e)) continue;
     const TricubicStiffness::Element Ke = tricubic(e);
     if (!Ke.own) {
       shared[e] = Ke;
@@ -151,6 +155,7 @@ SparseMatrix reducedRestStiffness(const FemMesh& mesh, std::span<const LameParam
     }
   }
   for (uint32_t e = mesh.numTricubic(); e < mesh.numElements(); ++e) {
+    if (skipped(e)) continue;
     const Eigen::Matrix<double, 24, 24> Ke = linearElementStiffness(mesh, lame, e);
     addUpperBlocks(nodes, mesh.elementNodes(e),
                    [&](int a, int b) -> Block { return Ke.block<3, 3>(3 * a, 3 * b); }, where);

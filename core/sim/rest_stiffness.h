@@ -17,8 +17,11 @@ namespace sculpt {
 /// It couples each control point with 7^3 others inside a regular lattice at K = 1 where the
 /// stand-in couples 5^3, so its factor is denser and slower to make; preconditioned with it, CG
 /// takes fewer iterations.
-/// Once `stop` (when given) is set, returns an empty matrix soon.
+/// Once `stop` (when given) is set, returns an empty matrix soon. Elements with skip[e] are left
+/// out (none when skip is empty): the share of the others, on the same pattern as theirs in
+/// the whole matrix.
 SparseMatrix reducedRestStiffness(const FemMesh& mesh, std::span<const LameParameters> lame,
-                                  const SparseMatrix& A, const std::atomic<bool>* stop = nullptr);
+                                  const SparseMatrix& A, const std::atomic<bool>* stop = nullptr,
+                                  std::span<const uint8_t> skip = {});
 
 }  // namespace sculpt

@@ -6,8 +6,8 @@
 #include <stdexcept>
 
 #include "fem/elastic_kernel.h"
+#include "sim/assembled_stiffness.h"
 #include "sim/linear_stiffness.h"
-#include "sim/rest_stiffness.h"
 #include "sim/restricted_matrix.h"
 
 namespace sculpt {
@@ -27,6 +27,8 @@ struct SystemPreconditioner::Factor {
   Eigen::VectorXd modulus;            // controlPointModulus of the factored materials
   // S on every coordinate: what extending the factor to coordinates it lacks reads.
   SparseMatrix system;
+  // The stiffness in S, unscaled, with its materials: the next factor of its kind starts there.
+  std::shared_ptr<const AssembledStiffness> assembled;
   double milliseconds = 0;
   explicit Factor(SparseCholesky::Method method) : cholesky(method) {}
 };
@@ -44,6 +46,9 @@ struct SystemPreconditioner::Request {
   std::optional<SparseMatrix> stiffness;  // K~lin, when assembled already
   std::optional<Eigen::VectorXd> modulus;  // its controlPointModulus
   bool restStiffness = false;  // the elements' own rest stiffness instead of K~lin
+  // The last stiffness of this kind assembled, if any: only the elements painted since are
+  // assembled again.
+  std::shared_ptr<const AssembledStiffness> base;
   std::shared_ptr<const std::atomic<bool>> cancelled;  // set: give up (no factor)
 };
 
@@ -64,6 +69,7 @@ class SystemPreconditioner::WorkerFactor {
            future_.wait_for(std::chrono::seconds(0)) == std::future_status::ready;
   }
   void cancel() { *cancelled_ = true; }
+  bool restStiffness() const { return restStiffness_; }
   // Counts this solve; the factor when its turn has come (null before, and once taken).
   std::unique_ptr<Factor> takeWhenDue(bool reproducible) {
     if (!running()) return nullptr;
@@ -84,6 +90,7 @@ class SystemPreconditioner::WorkerFactor {
   std::shared_ptr<std::atomic<bool>> cancelled_ = std::make_shared<std::atomic<bool>>(false);
   std::future<std::unique_ptr<Factor>> future_;
   int solvesSinceStart_ = 0, delay_;
+  bool restStiffness_;
 };
 
 namespace {
@@ -160,9 +167,10 @@ std::unique_ptr<SystemPreconditioner::Factor> factorRequest(
   const std::atomic<bool>* cancelled = request.cancelled.get();
   const FemMesh& mesh = *request.mesh;
   SparseMatrix stiffness =
-      request.stiffness       ? std::move(*request.stiffness)
-      : request.restStiffness ? reducedRestStiffness(mesh, request.lame, *request.A, cancelled)
-                              : reducedLinearStiffness(mesh, request.lame, *request.A);
+      request.stiffness ? std::move(*request.stiffness)
+      : request.base    ? stiffnessAt(mesh, *request.base, request.lame, *request.A, cancelled)
+                        : assembleStiffness(mesh, request.lame, *request.A, request.restStiffness,
+                                            cancelled);
   if (cancelled && *cancelled) return nullptr;
   factor->restStiffness = request.restStiffness;
   factor->stiffnessDiagonal = stiffness.diagonal();
@@ -170,7 +178,9 @@ std::unique_ptr<SystemPreconditioner::Factor> factorRequest(
                         ? *request.modulus
                         : controlPointModulus(*request.mesh, request.lame, *request.A);
   double diagonalSum = 0;
-  factor->system = systemMatrix(std::move(stiffness), request);
+  factor->system = systemMatrix(stiffness, request);
+  factor->assembled = std::make_shared<const AssembledStiffness>(
+      AssembledStiffness{std::move(stiffness), std::move(request.lame), request.restStiffness});
   const SparseMatrix restricted = restrictToFree(factor->system, request.freeDofs, &diagonalSum);
   const int n = int(restricted.rows());
   double stiffnessSum = 0;
@@ -205,7 +215,7 @@ std::unique_ptr<SystemPreconditioner::Factor> factorRequest(
 
 std::unique_ptr<SystemPreconditioner::Factor> SystemPreconditioner::makeFactor(
     const FemModel& model, double a, double b, double c, const std::vector<int>& freeDofs) {
-  Request request = requestFor(model, a, b, c, freeDofs);
+  Request request = requestOfKind(model, a, b, c, freeDofs, factor_ && factor_->restStiffness);
   std::unique_ptr<Factor> analysed;
   if (firstFactor_.valid()) {
     FirstFactor early = firstFactor_.get();
@@ -239,8 +249,18 @@ void SystemPreconditioner::prepareFirstFactor(const FemModel& model,
       });
 }
 
+SystemPreconditioner::Request SystemPreconditioner::requestOfKind(
+    const FemModel& model, double a, double b, double c, const std::vector<int>& freeDofs,
+    bool restStiffness) const {
+  Request request = requestFor(model, a, b, c, freeDofs);
+  request.restStiffness = restStiffness;
+  request.base = assembled_[restStiffness ? 1 : 0];
+  return request;
+}
+
 void SystemPreconditioner::adopt(std::unique_ptr<Factor> factor) {
   factor_ = std::move(factor);
+  if (factor_->assembled) assembled_[factor_->restStiffness ? 1 : 0] = factor_->assembled;
   ++stats_.factorizations;
   stats_.lastFactorMs = factor_->milliseconds;
   stats_.restStiffness = factor_->restStiffness;
@@ -253,7 +273,7 @@ void SystemPreconditioner::adopt(std::unique_ptr<Factor> factor) {
 
 SystemPreconditioner::WorkerFactor::WorkerFactor(Request request, SparseCholesky::Method method,
                                                  int delay)
-    : delay_(delay) {
+    : delay_(delay), restStiffness_(request.restStiffness) {
   request.cancelled = cancelled_;
   future_ = std::async(std::launch::async, [request = std::move(request), method]() mutable {
     return factorRequest(std::move(request), method);
@@ -263,7 +283,10 @@ SystemPreconditioner::WorkerFactor::WorkerFactor(Request request, SparseCholesky
 void SystemPreconditioner::startBackground(const FemModel& model, double a, double b, double c,
                                            const std::vector<int>& freeDofs) {
   if (pending_ && pending_->running()) return;
-  pending_ = std::make_unique<WorkerFactor>(requestFor(model, a, b, c, freeDofs), method_,
+  // Materials drifted from a rest-stiffness factor: another of its kind (only the elements
+  // painted since its own are assembled again). Pins edited: the stand-in, as at the start.
+  const bool rest = factor_ && factor_->restStiffness && freeDofs == factor_->freeDofs;
+  pending_ = std::make_unique<WorkerFactor>(requestOfKind(model, a, b, c, freeDofs, rest), method_,
                                             kDeterministicDelay);
 }
 
@@ -346,12 +369,14 @@ void SystemPreconditioner::countQuietSolves(const FemModel& model) {
 
 void SystemPreconditioner::giveUpRestStiffness() {
   quietSolves_ = 0;
-  if (!upgrade_ || !upgrade_->running()) return;
   // Made for the old pins, it would be dropped at its turn: waiting for it then (a
   // reproducible run does) stalls a step for nothing. Told to stop, it is let finish unwatched.
-  upgrade_->cancel();
-  abandoned_.push_back(std::move(upgrade_));
-  ++stats_.givenUp;
+  for (std::unique_ptr<WorkerFactor>* worker : {&upgrade_, &pending_}) {
+    if (!*worker || !(*worker)->running() || !(*worker)->restStiffness()) continue;
+    (*worker)->cancel();
+    abandoned_.push_back(std::move(*worker));
+    ++stats_.givenUp;
+  }
 }
 
 void SystemPreconditioner::upgradeToRestStiffness(const FemModel& model,
@@ -371,8 +396,7 @@ void SystemPreconditioner::upgradeToRestStiffness(const FemModel& model,
       freeDofs != factor_->freeDofs || quietSolves_ < kQuietSolves)
     return;
   const double* scales = factor_->scales;
-  Request request = requestFor(model, scales[0], scales[1], scales[2], freeDofs);
-  request.restStiffness = true;
+  Request request = requestOfKind(model, scales[0], scales[1], scales[2], freeDofs, true);
   // Making it costs about 0.07 ms of a core per element (the bunny's 2,968: 0.2 s). A
   // reproducible run takes it at the same turn as any worker factor, waiting if it is late:
   // steps drawn one by one (sculpt --bench) find it ready; a tight loop on two cores (sculpt-cli)

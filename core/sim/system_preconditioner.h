@@ -20,6 +20,9 @@
 //    materials and pins have stayed put for a while (from the start on), a time-stepping solve
 //    also has a factor with the elements' own rest stiffness made on a worker, adopted as the
 //    others are: denser and slower to make, it saves CG iterations in every step after it.
+//    Materials that drift from it are followed by another factor of that kind.
+//  - A factor keeps its stiffness with the materials it was assembled for; the next of its kind
+//    assembles only the elements painted since (assembled_stiffness.h).
 
 #include <cstdint>
 #include <future>
@@ -33,6 +36,8 @@
 #include "sim/sparse_cholesky.h"
 
 namespace sculpt {
+
+struct AssembledStiffness;
 
 struct PreconditionerStats {
   int factorizations = 0;      ///< numeric factorisations
@@ -66,8 +71,8 @@ class SystemPreconditioner {
   /// coordinates) have not changed since.
   void prepareFirstFactor(const FemModel& model, const std::vector<int>& freeDofs);
   /// A new factor for the model's current materials and the last update()'s scales and free
-  /// coordinates, made now (a factor pending on the worker is dropped). Nothing before the
-  /// first update().
+  /// coordinates, of the kind in use (stand-in or rest stiffness), made now (a factor pending on
+  /// the worker is dropped). Nothing before the first update().
   void refactor(const FemModel& model);
   /// z ~ S^-1 r on the free coordinates given to the last update().
   void apply(const Eigen::VectorXd& r, Eigen::VectorXd& z) const;
@@ -89,6 +94,9 @@ class SystemPreconditioner {
  private:
   std::unique_ptr<Factor> makeFactor(const FemModel& model, double a, double b, double c,
                                      const std::vector<int>& freeDofs);
+  // What a factor of the kind asked for needs, starting from the last stiffness of that kind.
+  Request requestOfKind(const FemModel& model, double a, double b, double c,
+                        const std::vector<int>& freeDofs, bool restStiffness) const;
   void adopt(std::unique_ptr<Factor> factor);
   // Counts the solves at the model's current materials (a change starts the count again, as a
   // pin edit does: giveUpRestStiffness).
@@ -123,6 +131,8 @@ class SystemPreconditioner {
   SparseCholesky::Method method_;
   bool reproducible_ = true;
   std::unique_ptr<Factor> factor_;
+  // The last stiffness assembled of each kind (stand-in, rest), kept for the next factor.
+  std::shared_ptr<const AssembledStiffness> assembled_[2];
   // Applying the factor to the current free coordinates: position in the factor's numbering
   // (-1: not in it, served by the diagonal), and D^-1/2 (empty: no rescaling).
   std::vector<int> toFactor_;

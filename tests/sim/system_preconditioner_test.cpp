@@ -338,6 +338,45 @@ TEST(SystemPreconditioner, TheWindowTakesTheElementsOwnStiffnessAsSoonAsItIsRead
   EXPECT_GE(adoptedAt, 3);  // 0: not adopted before the 10th solve
 }
 
+TEST(SystemPreconditioner, PaintingAfterTheElementsOwnStiffnessKeepsItsKindAndItsBits) {
+  // Dabs alternately 10x stiffer and 10x softer once the rest-stiffness factor serves (from
+  // solve 10): the factors that follow the drift are of that kind too, assembled from the
+  // painted elements alone, and the run gives the same bits twice.
+  auto run = [](std::vector<int>& iterations, PreconditionerStats& stats) {
+    auto model = stiffBlock3();
+    Simulator simulator(*model);
+    pinTheBottomUnderGravity(simulator);
+    for (int k = 0; k < 12; ++k) EXPECT_TRUE(simulator.step().ok);
+    EXPECT_TRUE(simulator.preconditionerStats().restStiffness);
+    Material stiffer = model->setup().material, softer = stiffer;
+    stiffer.youngs *= 10;
+    softer.youngs /= 10;
+    const Points& rest = model->restControl();
+    for (int k = 0; k < 40; ++k) {
+      const Eigen::Vector3d centre = rest.row((7 * k) % rest.rows()).transpose();
+      EXPECT_GT(model->paintMaterial(centre, 0.8, k % 2 ? softer : stiffer), 0);
+      const StepReport report = simulator.step();
+      EXPECT_TRUE(report.ok) << report.message;
+      EXPECT_LE(report.residual, simulator.settings().implicitTolerance);
+      iterations.push_back(report.iterations);
+    }
+    stats = simulator.preconditionerStats();
+    return Points(simulator.positions());
+  };
+  std::vector<int> iterations, again;
+  PreconditionerStats stats, statsAgain;
+  const Points a = run(iterations, stats), b = run(again, statsAgain);
+  EXPECT_TRUE(a == b);
+  EXPECT_EQ(iterations, again);
+  std::printf("[ painted ] %d factorisations, %d of them rest stiffness; CG iterations:",
+              stats.factorizations, stats.restStiffnessFactorizations);
+  for (int n : iterations) std::printf(" %d", n);
+  std::printf("\n");
+  EXPECT_TRUE(stats.restStiffness);
+  EXPECT_GE(stats.restStiffnessFactorizations, 2);
+  EXPECT_EQ(stats.restStiffnessFactorizations, stats.factorizations - 1);  // but the first
+}
+
 TEST(SystemPreconditioner, AnInertiaDominatedSystemKeepsTheStandInUnrotated) {
   // The default block3 (stiffness a tenth of the diagonal): rotated solves and the elements'
   // own stiffness cost more than they save there (docs/fem.md).
