@@ -260,6 +260,7 @@ SystemPreconditioner::Request SystemPreconditioner::requestOfKind(
 
 void SystemPreconditioner::adopt(std::unique_ptr<Factor> factor) {
   factor_ = std::move(factor);
+  adoptedCurrent_ = factor_->materialVersion == materialVersion_;
   if (factor_->assembled) assembled_[factor_->restStiffness ? 1 : 0] = factor_->assembled;
   ++stats_.factorizations;
   stats_.lastFactorMs = factor_->milliseconds;
@@ -284,8 +285,12 @@ void SystemPreconditioner::startBackground(const FemModel& model, double a, doub
                                            const std::vector<int>& freeDofs) {
   if (pending_ && pending_->running()) return;
   // Materials drifted from a rest-stiffness factor: another of its kind (only the elements
-  // painted since its own are assembled again). Pins edited: the stand-in, as at the start.
-  const bool rest = factor_ && factor_->restStiffness && freeDofs == factor_->freeDofs;
+  // painted since its own are assembled again), unless the one in use was behind the materials
+  // when it came. Then the painting goes on, each factor is a few dabs behind when it comes,
+  // and the rest stiffness saves no iterations over the stand-in for its higher cost
+  // (docs/BENCHMARKS.md, "Painting a solid that stands"). Pins edited: the stand-in.
+  const bool rest = factor_ && factor_->restStiffness && adoptedCurrent_ &&
+                    freeDofs == factor_->freeDofs;
   pending_ = std::make_unique<WorkerFactor>(requestOfKind(model, a, b, c, freeDofs, rest), method_,
                                             kDeterministicDelay);
 }
@@ -312,6 +317,7 @@ bool SystemPreconditioner::update(const FemModel& model, double massScale, doubl
   if (!std::is_sorted(freeDofs.begin(), freeDofs.end()))
     throw std::invalid_argument("SystemPreconditioner: free coordinates must be increasing");
   const double scales[3] = {massScale, dampingScale, stiffnessScale};
+  materialVersion_ = model.materialVersion();
   const bool pinsEdited = freeDofs != freeDofs_;  // or the first solve
   if (pinsEdited && solves_ > 0) giveUpRestStiffness();
   std::erase_if(abandoned_, [](const std::unique_ptr<WorkerFactor>& w) { return w->finished(); });
@@ -406,6 +412,7 @@ void SystemPreconditioner::upgradeToRestStiffness(const FemModel& model,
 
 void SystemPreconditioner::refactor(const FemModel& model) {
   if (!factor_) return;
+  materialVersion_ = model.materialVersion();
   const double* s = factor_->scales;
   factorNow(model, s[0], s[1], s[2], freeDofs_);
   rescale(model, freeDofs_);

@@ -133,6 +133,10 @@ class SystemPreconditioner {
   std::unique_ptr<Factor> factor_;
   // The last stiffness assembled of each kind (stand-in, rest), kept for the next factor.
   std::shared_ptr<const AssembledStiffness> assembled_[2];
+  // The materials of the last update() or refactor(), and whether the factor in use had them
+  // when it was adopted.
+  uint64_t materialVersion_ = 0;
+  bool adoptedCurrent_ = true;
   // Applying the factor to the current free coordinates: position in the factor's numbering
   // (-1: not in it, served by the diagonal), and D^-1/2 (empty: no rescaling).
   std::vector<int> toFactor_;

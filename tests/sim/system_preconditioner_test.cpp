@@ -340,7 +340,7 @@ TEST(SystemPreconditioner, TheWindowTakesTheElementsOwnStiffnessAsSoonAsItIsRead
 
 TEST(SystemPreconditioner, PaintingAfterTheElementsOwnStiffnessKeepsItsKindAndItsBits) {
   // Dabs alternately 10x stiffer and 10x softer once the rest-stiffness factor serves (from
-  // solve 10): the factors that follow the drift are of that kind too, assembled from the
+  // solve 10): the factor that follows the drift is of that kind too, assembled from the
   // painted elements alone, and the run gives the same bits twice.
   auto run = [](std::vector<int>& iterations, PreconditionerStats& stats) {
     auto model = stiffBlock3();
