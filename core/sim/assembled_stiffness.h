@@ -2,7 +2,8 @@
 // A reduced stiffness (the stand-in or the elements' own rest stiffness) kept with the materials
 // it was assembled for, so that a factor for new materials assembles only the elements whose
 // materials changed. Every element matrix is linear in its Gauss points' lambda and mu, so
-// S(new) = S(old) + S(new - old), the last term over the changed elements only.
+// S(new) = S(old) + S(new - old), the last term over the changed elements only (docs/fem.md,
+// "A new factor assembles only what was painted").
 
 #include <atomic>
 #include <cstdint>
