@@ -48,16 +48,11 @@ class AssembledStiffnessTest : public ::testing::TestWithParam<bool> {
 };
 
 TEST_P(AssembledStiffnessTest, ADabAssembledAloneIsTheWholeAssembly) {
-  Material first;
-  first.youngs = 7e5;
-  first.poisson = 0.45;
-  auto model = test::paintedMixedModel(first);
+  auto model = test::paintedMixedModel(Material{.youngs = 7e5, .poisson = 0.45});
   ASSERT_TRUE(model);
   const AssembledStiffness before = assembled(*model);
   // A second dab off the centre, across elements of every kind (part of each element only).
-  Material second;
-  second.youngs = 3e4;
-  second.poisson = 0.2;
+  const Material second{.youngs = 3e4, .poisson = 0.2};
   const Eigen::Vector3d corner = model->restControl().colwise().minCoeff().transpose();
   const Eigen::Vector3d centre = model->restControl().colwise().mean().transpose();
   ASSERT_GT(model->paintMaterial(0.5 * (corner + centre), 0.7, second), 0);
@@ -85,8 +80,7 @@ TEST_P(AssembledStiffnessTest, UnchangedMaterialsGiveTheSameMatrixAndAnUndoneDab
   EXPECT_EQ(relativeDifference(same, first.matrix), 0.0);
 
   const std::vector<LameParameters> original = mesh.gaussLame;
-  Material stiffer;
-  stiffer.youngs = 1e6;
+  const Material stiffer{.youngs = 1e6};
   ASSERT_GT(model->paintMaterial(model->restControl().row(5).transpose(), 1.0, stiffer), 0);
   const AssembledStiffness painted{stiffnessAt(mesh, first, mesh.gaussLame, A), mesh.gaussLame,
                                    rest()};
