@@ -286,8 +286,8 @@ void SystemPreconditioner::startBackground(const FemModel& model, double a, doub
   if (pending_ && pending_->running()) return;
   // Materials drifted from a rest-stiffness factor: another of its kind (only the elements
   // painted since its own are assembled again), unless the one in use was behind the materials
-  // when it came. Then the painting goes on, each factor is a few dabs behind when it comes,
-  // and the rest stiffness saves no iterations over the stand-in for its higher cost
+  // when it came: the painting is then going on, each factor comes a few dabs behind, and the
+  // rest stiffness saves no iterations over the stand-in for its higher cost
   // (docs/BENCHMARKS.md, "Painting a solid that stands"). Pins edited: the stand-in.
   const bool rest = factor_ && factor_->restStiffness && adoptedCurrent_ &&
                     freeDofs == factor_->freeDofs;
