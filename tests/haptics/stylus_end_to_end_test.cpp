@@ -15,6 +15,7 @@
 #include "haptics/mock/mock_phantom.h"
 #include "haptics/session/haptic_session.h"
 #include "scene/scene_controller.h"
+#include "support/paced_rate.h"
 
 namespace sculpt::haptics {
 namespace {
@@ -63,9 +64,8 @@ struct BlockScene {
   double stretch = 1.0;
   void paceForThisBuild() {
     const SceneFrame frame = waitFor(waitFor(0.0).simulatedTime + 0.1);
-    const double capacity = SceneSettings().timeStep / (1e-3 * frame.stepMs);
-    if (capacity < 3.0) {
-      const double rate = capacity / 3.0;
+    const double rate = test::pacedRate(1.0, SceneSettings().timeStep, 1e-3 * frame.stepMs, 3.0);
+    if (rate < 1.0) {
       controller.loop().setRealTimeRate(rate);
       stretch = 1.0 / rate;
     }

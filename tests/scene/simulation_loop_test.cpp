@@ -16,6 +16,7 @@
 #include <thread>
 #include <vector>
 
+#include "support/paced_rate.h"
 #include "tools/strokes.h"
 
 namespace sculpt {
@@ -59,13 +60,14 @@ TEST(SimulationLoop, StepsAtTheSetRateWhileAToolIsUpdatedAt1kHz) {
   // step where that is less (a sanitizer build, a loaded machine), so that every step fits in
   // its period with room to spare.
   std::unique_ptr<ScenePhysics> physics = blockPhysics(settings);
-  const double capacity = settings.timeStep / medianStepSeconds(*physics);
-  const double rate = std::min(0.5, capacity / 4.0);
+  const double stepSeconds = medianStepSeconds(*physics);
+  const double rate = test::pacedRate(0.5, settings.timeStep, stepSeconds, 4.0);
   const double period = settings.timeStep / rate;
   // The drag: 2 s, or twelve periods where that is longer, so that the measured ratio spans
   // enough steps for a late one not to sway it.
   const double drag = std::max(2.0, 12.0 * period);
-  std::printf("[ measured ] this build steps block3 at %.2fx real time\n", capacity);
+  std::printf("[ measured ] this build steps block3 at %.2fx real time\n",
+              settings.timeStep / stepSeconds);
   // What the observer writes lives longer than the loop (declared after it).
   std::mutex mutex;
   std::vector<double> stepWall, stepSimulated;
