@@ -260,14 +260,16 @@ SystemPreconditioner::Request SystemPreconditioner::requestOfKind(
 
 void SystemPreconditioner::adopt(std::unique_ptr<Factor> factor) {
   factor_ = std::move(factor);
-  adoptedCurrent_ = factor_->materialVersion == materialVersion_;
   if (factor_->assembled) assembled_[factor_->restStiffness ? 1 : 0] = factor_->assembled;
   ++stats_.factorizations;
   stats_.lastFactorMs = factor_->milliseconds;
   stats_.restStiffness = factor_->restStiffness;
   if (factor_->restStiffness) ++stats_.restStiffnessFactorizations;
   stats_.factorNonZeros = factor_->cholesky.factorNonZeros();
-  freshIterations_ = -1;
+  // A factor that came behind the materials (painting went on while it was made) never serves
+  // a solve unrescaled: its drift is measured from the last factor of its kind that did.
+  const bool current = factor_->materialVersion == materialVersion_;
+  freshIterations_ = current ? -1 : kindFreshIterations_[factor_->restStiffness ? 1 : 0];
   drifted_ = false;
   appliedMaterialVersion_ = ~uint64_t(0);  // the mapping and scaling are redone
 }
@@ -285,12 +287,10 @@ void SystemPreconditioner::startBackground(const FemModel& model, double a, doub
                                            const std::vector<int>& freeDofs) {
   if (pending_ && pending_->running()) return;
   // Materials drifted from a rest-stiffness factor: another of its kind (only the elements
-  // painted since its own are assembled again), unless the one in use was behind the materials
-  // when it came: the painting is then going on, each factor comes a few dabs behind, and the
-  // rest stiffness saves no iterations over the stand-in for its higher cost
-  // (docs/BENCHMARKS.md, "Painting a solid that stands"). Pins edited: the stand-in.
-  const bool rest = factor_ && factor_->restStiffness && adoptedCurrent_ &&
-                    freeDofs == factor_->freeDofs;
+  // painted since its own are assembled again). Along a stroke it comes a few dabs behind and
+  // still saves iterations over the stand-in (docs/BENCHMARKS.md, "A paint stroke").
+  // Pins edited: the stand-in.
+  const bool rest = factor_ && factor_->restStiffness && freeDofs == factor_->freeDofs;
   pending_ = std::make_unique<WorkerFactor>(requestOfKind(model, a, b, c, freeDofs, rest), method_,
                                             kDeterministicDelay);
 }
@@ -395,8 +395,11 @@ void SystemPreconditioner::upgradeToRestStiffness(const FemModel& model,
   // inertia) are a few Newton steps, over before such a factor would arrive. Without tricubic
   // elements the stand-in is the elements' own stiffness already. Where the inertia dominates,
   // the solves are not rotated, and the elements' own stiffness saves iterations only while the
-  // solid stays near its rest shape.
-  if (solves_ < 2 || factor_->restStiffness || (pending_ && pending_->running()) ||
+  // solid stays near its rest shape. A rest-stiffness factor that came behind the materials is
+  // replaced once they stay put: below the drift threshold, it would serve on rescaled.
+  const bool currentRest =
+      factor_->restStiffness && factor_->materialVersion == model.materialVersion();
+  if (solves_ < 2 || currentRest || (pending_ && pending_->running()) ||
       factor_->scales[0] == 0 ||
       model.mesh().numTricubic() == 0 || !factor_->stiffnessDominated ||
       freeDofs != factor_->freeDofs || quietSolves_ < kQuietSolves)
@@ -571,6 +574,7 @@ void SystemPreconditioner::reportIterations(int iterations) {
   const bool fresh = inverseSqrtScale_.size() == 0;
   if (fresh) {
     if (freshIterations_ < 0 || iterations < freshIterations_) freshIterations_ = iterations;
+    kindFreshIterations_[factor_->restStiffness ? 1 : 0] = freshIterations_;
   } else if (freshIterations_ >= 0 &&
              iterations > kDriftFactor * freshIterations_ + kDriftSlack) {
     drifted_ = true;

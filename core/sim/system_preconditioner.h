@@ -20,7 +20,8 @@
 //    materials and pins have stayed put for a while (from the start on), a time-stepping solve
 //    also has a factor with the elements' own rest stiffness made on a worker, adopted as the
 //    others are: denser and slower to make, it saves CG iterations in every step after it.
-//    Materials that drift from it are followed by another factor of that kind.
+//    Materials that drift from it are followed by another factor of that kind, and one that
+//    came behind the materials (painting went on) is replaced once they stay put.
 //  - A factor keeps its stiffness with the materials it was assembled for; the next of its kind
 //    assembles only the elements painted since (assembled_stiffness.h).
 
@@ -133,10 +134,8 @@ class SystemPreconditioner {
   std::unique_ptr<Factor> factor_;
   // The last stiffness assembled of each kind (stand-in, rest), kept for the next factor.
   std::shared_ptr<const AssembledStiffness> assembled_[2];
-  // The materials of the last update() or refactor(), and whether the factor in use had them
-  // when it was adopted.
+  // The materials of the last update() or refactor().
   uint64_t materialVersion_ = 0;
-  bool adoptedCurrent_ = true;
   // Applying the factor to the current free coordinates: position in the factor's numbering
   // (-1: not in it, served by the diagonal), and D^-1/2 (empty: no rescaling).
   std::vector<int> toFactor_;
@@ -151,8 +150,10 @@ class SystemPreconditioner {
   std::vector<int> toExtension_;
   int extendedFactor_ = -1;
   std::vector<int> extendedDofs_;
-  // Drift: the fewest iterations a solve took since the last factorisation.
+  // Drift: the fewest iterations an unrescaled solve took since the last factorisation, and of
+  // each kind (stand-in, rest) the last such count, for a factor adopted behind the materials.
   int freshIterations_ = -1;
+  int kindFreshIterations_[2] = {-1, -1};
   bool drifted_ = false;
   // After pin edits or drift (the stand-in), and the rest-stiffness factor.
   std::unique_ptr<WorkerFactor> pending_, upgrade_;

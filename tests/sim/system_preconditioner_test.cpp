@@ -377,6 +377,57 @@ TEST(SystemPreconditioner, PaintingAfterTheElementsOwnStiffnessKeepsItsKindAndIt
   EXPECT_EQ(stats.restStiffnessFactorizations, stats.factorizations - 1);  // but the first
 }
 
+TEST(SystemPreconditioner, AStrokeThatOutrunsItsFactorsIsFollowedAndCaughtUpWith) {
+  // A stroke 10x stiffer, a dab every step, moving a tenth of a cell a step: each new factor
+  // comes 8 solves behind the materials. Its drift is measured from the last factor that served
+  // its own materials, so the stroke is followed by factors of the elements' own stiffness; and
+  // once the stroke ends, one with the final materials replaces the one that came behind.
+  auto model = stiffBlock3();
+  Simulator simulator(*model);
+  pinTheBottomUnderGravity(simulator);
+  std::vector<int> before, during, after;
+  for (int k = 0; k < 40; ++k) before.push_back(simulator.step().iterations);
+  const PreconditionerStats standing = simulator.preconditionerStats();
+  ASSERT_TRUE(standing.restStiffness);
+  Material stiffer = model->setup().material;
+  stiffer.youngs *= 10;
+  const Eigen::Vector3d low = model->restControl().colwise().minCoeff().transpose();
+  const Eigen::Vector3d high = model->restControl().colwise().maxCoeff().transpose();
+  const int dabs = 120;
+  for (int k = 0; k < dabs; ++k) {
+    const double s = double(k) / dabs;  // along the block's diagonal, at mid height
+    const Eigen::Vector3d centre(low.x() + s * (high.x() - low.x()), 0.5 * (low.y() + high.y()),
+                                 low.z() + s * (high.z() - low.z()));
+    model->paintMaterial(centre, 0.3, stiffer);
+    const StepReport report = simulator.step();
+    ASSERT_TRUE(report.ok) << report.message;
+    EXPECT_LE(report.residual, simulator.settings().implicitTolerance);
+    during.push_back(report.iterations);
+  }
+  const PreconditionerStats stroked = simulator.preconditionerStats();
+  for (int k = 0; k < 60; ++k) after.push_back(simulator.step().iterations);
+  const PreconditionerStats settled = simulator.preconditionerStats();
+  auto print = [](const char* what, const std::vector<int>& n) {
+    std::printf("%s", what);
+    for (int i : n) std::printf(" %d", i);
+    std::printf("\n");
+  };
+  print("[ standing ]", before);
+  print("[ stroke   ]", during);
+  print("[ after    ]", after);
+  std::printf("[ factors ] %d standing, %d after the stroke (rest stiffness %d), %d settled\n",
+              standing.factorizations, stroked.factorizations,
+              stroked.restStiffnessFactorizations, settled.factorizations);
+  EXPECT_GE(stroked.restStiffnessFactorizations - standing.restStiffnessFactorizations, 2);
+  EXPECT_EQ(stroked.restStiffnessFactorizations - standing.restStiffnessFactorizations,
+            stroked.factorizations - standing.factorizations);  // no stand-in along the stroke
+  EXPECT_GT(settled.factorizations, stroked.factorizations);
+  EXPECT_TRUE(settled.restStiffness);
+  // Settled, the solves take what they took before the stroke.
+  const int standingMost = *std::max_element(before.end() - 10, before.end());
+  EXPECT_LE(*std::max_element(after.end() - 10, after.end()), standingMost);
+}
+
 TEST(SystemPreconditioner, AnInertiaDominatedSystemKeepsTheStandInUnrotated) {
   // The default block3 (stiffness a tenth of the diagonal): rotated solves and the elements'
   // own stiffness cost more than they save there (docs/fem.md).
