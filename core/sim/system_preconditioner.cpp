@@ -4,6 +4,7 @@
 #include <chrono>
 #include <optional>
 #include <stdexcept>
+#include <utility>
 
 #include "fem/elastic_kernel.h"
 #include "sim/assembled_stiffness.h"
@@ -270,6 +271,7 @@ void SystemPreconditioner::adopt(std::unique_ptr<Factor> factor) {
   // a solve unrescaled: its drift is measured from the last factor of its kind that did.
   const bool current = factor_->materialVersion == materialVersion_;
   freshIterations_ = current ? -1 : kindFreshIterations_[factor_->restStiffness ? 1 : 0];
+  firstSolveBehind_ = !current;
   drifted_ = false;
   appliedMaterialVersion_ = ~uint64_t(0);  // the mapping and scaling are redone
 }
@@ -572,11 +574,16 @@ void SystemPreconditioner::reportIterations(int iterations) {
     rotationPreferred_ = rotateThisSolve_;
   lastIterations_[way] = iterations;
   const bool fresh = inverseSqrtScale_.size() == 0;
-  if (fresh) {
+  const bool drifting =
+      freshIterations_ >= 0 && iterations > kDriftFactor * freshIterations_ + kDriftSlack;
+  if (std::exchange(firstSolveBehind_, false) && !fresh && drifting) {
+    // The new factor's first solve already misses the borrowed baseline: the solid's state, not
+    // the factor's age, sets the iterations now (a collapse), and refactoring would not help.
+    freshIterations_ = iterations;
+  } else if (fresh) {
     if (freshIterations_ < 0 || iterations < freshIterations_) freshIterations_ = iterations;
     kindFreshIterations_[factor_->restStiffness ? 1 : 0] = freshIterations_;
-  } else if (freshIterations_ >= 0 &&
-             iterations > kDriftFactor * freshIterations_ + kDriftSlack) {
+  } else if (drifting) {
     drifted_ = true;
   }
 }

@@ -154,8 +154,9 @@ class SystemPreconditioner {
   // each kind (stand-in, rest) the last such count, for a factor adopted behind the materials.
   int freshIterations_ = -1;
   int kindFreshIterations_[2] = {-1, -1};
+  bool firstSolveBehind_ = false;  // the next solve is the first of a factor adopted behind
   bool drifted_ = false;
-  // After pin edits or drift (the stand-in), and the rest-stiffness factor.
+  // After pin edits (the stand-in) or drift (the kind in use), and the rest-stiffness upgrade.
   std::unique_ptr<WorkerFactor> pending_, upgrade_;
   // Given up and told to stop, not yet finished: destroying one would wait for it.
   std::vector<std::unique_ptr<WorkerFactor>> abandoned_;
