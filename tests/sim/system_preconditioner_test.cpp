@@ -428,6 +428,48 @@ TEST(SystemPreconditioner, AStrokeThatOutrunsItsFactorsIsFollowedAndCaughtUpWith
   EXPECT_LE(*std::max_element(after.end() - 10, after.end()), standingMost);
 }
 
+TEST(SystemPreconditioner, AFactorThatCameBehindIsJudgedByItsFirstSolve) {
+  // The same CG iteration counts reported in two runs but for the first solve of a factor that
+  // the drift set off and that came behind the materials (a dab before every solve): 5 there
+  // means the factor helped, so the borrowed baseline (3) stands and 12 later is drift again;
+  // 20 there means that the solid's state, not the factor's age, sets the iterations (a
+  // collapse), so 12 later is no drift, and no factor is made that could not help.
+  auto factorisations = [](int firstSolveOfTheNewFactor) {
+    auto model = test::buildModel(test::block3(), 1, false);
+    EXPECT_TRUE(model);
+    const std::vector<int> dofs = allDofs(*model, 16);
+    Material stiffer = model->setup().material, softer = stiffer;
+    stiffer.youngs *= 10;
+    softer.youngs /= 10;
+    SystemPreconditioner preconditioner;
+    int dab = 0;
+    auto paintAndUpdate = [&](bool paint) {
+      const double s = 0.03 * dab;  // along the diagonal, a new material at every dab
+      if (paint) {
+        const Material& material = dab++ % 2 ? softer : stiffer;
+        EXPECT_GT(model->paintMaterial(Eigen::Vector3d(s, 1.5, s), 0.4, material), 0);
+      }
+      EXPECT_TRUE(preconditioner.update(*model, 3600, 0, 1, dofs));
+    };
+    paintAndUpdate(false);
+    preconditioner.reportIterations(3);  // the first factor, at its own materials
+    for (paintAndUpdate(true); preconditioner.stats().factorizations < 2 && dab < 40;
+         paintAndUpdate(true))
+      preconditioner.reportIterations(20);
+    EXPECT_EQ(preconditioner.stats().factorizations, 2) << "the drift's factor never came";
+    preconditioner.reportIterations(firstSolveOfTheNewFactor);
+    for (int k = 0; k < 30; ++k) {
+      paintAndUpdate(true);
+      preconditioner.reportIterations(12);
+    }
+    return preconditioner.stats().factorizations;
+  };
+  const int helped = factorisations(5), collapsing = factorisations(20);
+  std::printf("[ factors ] first solve 5: %d, first solve 20: %d\n", helped, collapsing);
+  EXPECT_GE(helped, 3);
+  EXPECT_EQ(collapsing, 2);
+}
+
 TEST(SystemPreconditioner, AnInertiaDominatedSystemKeepsTheStandInUnrotated) {
   // The default block3 (stiffness a tenth of the diagonal): rotated solves and the elements'
   // own stiffness cost more than they save there (docs/fem.md).
