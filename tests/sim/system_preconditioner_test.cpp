@@ -378,10 +378,11 @@ TEST(SystemPreconditioner, PaintingAfterTheElementsOwnStiffnessKeepsItsKindAndIt
 }
 
 TEST(SystemPreconditioner, AStrokeThatOutrunsItsFactorsIsFollowedAndCaughtUpWith) {
-  // A stroke 10x stiffer, a dab every step, moving a tenth of a cell a step: each new factor
-  // comes 8 solves behind the materials. Its drift is measured from the last factor that served
-  // its own materials, so the stroke is followed by factors of the elements' own stiffness; and
-  // once the stroke ends, one with the final materials replaces the one that came behind.
+  // A stroke 10x stiffer, a dab every step, moving 0.035 m (a seventh of a level-2 cell) a
+  // step: each new factor comes 8 solves behind the materials. Its drift is measured from the
+  // last factor that served its own materials, so the stroke is followed by factors of the
+  // elements' own stiffness; and once the stroke ends, one with the final materials replaces
+  // the one that came behind.
   auto model = stiffBlock3();
   Simulator simulator(*model);
   pinTheBottomUnderGravity(simulator);
