@@ -9,9 +9,9 @@ namespace sculpt {
 
 SparseMatrix assembleStiffness(const FemMesh& mesh, std::span<const LameParameters> lame,
                                const SparseMatrix& A, bool restStiffness,
-                               const std::atomic<bool>* stop) {
-  return restStiffness ? reducedRestStiffness(mesh, lame, A, stop)
-                       : reducedLinearStiffness(mesh, lame, A);
+                               const std::atomic<bool>* stop, std::span<const uint8_t> skip) {
+  return restStiffness ? reducedRestStiffness(mesh, lame, A, stop, skip)
+                       : reducedLinearStiffness(mesh, lame, A, skip);
 }
 
 SparseMatrix stiffnessAt(const FemMesh& mesh, const AssembledStiffness& base,
@@ -34,8 +34,7 @@ SparseMatrix stiffnessAt(const FemMesh& mesh, const AssembledStiffness& base,
   if (2 * changed > mesh.numElements())
     return assembleStiffness(mesh, lame, A, base.restStiffness, stop);
   const SparseMatrix share =
-      base.restStiffness ? reducedRestStiffness(mesh, change, A, stop, unchanged)
-                         : reducedLinearStiffness(mesh, change, A, unchanged);
+      assembleStiffness(mesh, change, A, base.restStiffness, stop, unchanged);
   if (stop && *stop) return {};
   return base.matrix + share;
 }

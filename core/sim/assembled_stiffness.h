@@ -21,10 +21,12 @@ struct AssembledStiffness {
   bool restStiffness = false;         ///< the elements' own rest stiffness, not the stand-in
 };
 
-/// The reduced stiffness of the kind asked for, assembled whole. Empty once `stop` is set.
+/// The reduced stiffness of the kind asked for, assembled whole, or without the elements that
+/// have skip[e] (none when skip is empty). Empty once `stop` is set.
 SparseMatrix assembleStiffness(const FemMesh& mesh, std::span<const LameParameters> lame,
                                const SparseMatrix& A, bool restStiffness,
-                               const std::atomic<bool>* stop = nullptr);
+                               const std::atomic<bool>* stop = nullptr,
+                               std::span<const uint8_t> skip = {});
 
 /// The reduced stiffness of `base`'s kind at the materials `lame`: base's matrix plus the share
 /// of the elements whose materials changed, or assembled whole where most of them did.
