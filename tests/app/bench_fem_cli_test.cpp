@@ -168,6 +168,13 @@ TEST_F(BenchFemCliTest, BenchFemPaintEveryPaintsDeterministicDabs) {
   EXPECT_NE(lineStartingWith(every.out, "dabs").find("dabs=4 warmup_dabs=3 "), std::string::npos)
       << every.out;
 
+  // --paint-from: the dabs start at that measured step, none in the warm-up.
+  CliResult late;
+  bench(kBlock + " --steps 6 --paint-every 2 --paint-from 3", &late);
+  EXPECT_NE(late.out.find(" paint_every=2 paint_from=3\n"), std::string::npos) << late.out;
+  EXPECT_NE(lineStartingWith(late.out, "dabs").find("dabs=1 warmup_dabs=0 "), std::string::npos)
+      << late.out;  // before measured step 4 alone
+
   // Density dabs: the same cells painted, the mass matrices updated instead of the stiffness.
   CliResult density;
   const std::map<std::string, double> c =
@@ -283,6 +290,8 @@ TEST_F(BenchFemCliTest, BenchFemRefusesBadOptions) {
                  "--paint-field is youngs or density, not 'mass'");
   expectBadInput("bench fem " + kBlock + " --steps 2 --paint-field density",
                  "--paint-field chooses what the dabs paint: it needs --paint-every");
+  expectBadInput("bench fem " + kBlock + " --steps 2 --paint-from 1",
+                 "--paint-from says when the dabs start: it needs --paint-every");
   expectBadInput("bench fem", "exactly one CONTROL file or SCENE");
   expectBadInput("bench subdivide " + kBlock + " --paint-every 2",
                  "--paint-every applies to bench fem");
