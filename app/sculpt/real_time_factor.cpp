@@ -12,6 +12,12 @@ std::optional<double> realTimeFactor(double simulatedAtStart, double simulatedAt
   return advanced / wallSeconds;
 }
 
+std::optional<double> meanStepMs(uint64_t stepsAtStart, double totalMsAtStart,
+                                 uint64_t stepsAtEnd, double totalMsAtEnd) {
+  if (stepsAtEnd <= stepsAtStart || !(totalMsAtEnd >= totalMsAtStart)) return std::nullopt;
+  return (totalMsAtEnd - totalMsAtStart) / static_cast<double>(stepsAtEnd - stepsAtStart);
+}
+
 std::string realTimeLabel(double factor) {
   // Two significant digits: enough to tell 0.28x from 0.3x, and the strip does not jitter.
   char text[48];

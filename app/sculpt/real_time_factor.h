@@ -1,8 +1,9 @@
 #pragma once
 // How the simulation keeps up with the clock: simulated seconds per wall-clock second, as the
 // status strip shows it ("0.28x real time", amber below 1x, when a stylus or a recording would
-// feel the solid lag behind the hand).
+// feel the solid lag behind the hand), and what its steps cost over the same window.
 
+#include <cstdint>
 #include <optional>
 #include <string>
 
@@ -16,7 +17,17 @@ std::optional<double> realTimeFactor(double simulatedAtStart, double simulatedAt
 /// "0.28x real time", "1.9x real time", "12x real time".
 std::string realTimeLabel(double factor);
 
-/// Below real time: the simulation falls behind the clock.
-inline bool behindRealTime(double factor) { return factor < 1.0; }
+/// Below real time by more than a one-second window can tell: the simulation falls behind the
+/// clock. A simulation that keeps up reads 58 to 62 steps of 1/60 s in one window and the next
+/// (the steps are whole, the window is the UI's frames), so one that loses less than a step in
+/// twenty (0.95x) is not flagged.
+inline bool behindRealTime(double factor) { return factor < 0.95; }
+
+/// The mean wall time (ms) of the steps taken between two frames, from their step counts and
+/// summed step times (SceneFrame::steps, stepMsTotal): the strip's figure, steadier than the
+/// last step's time, which jumps with every rotation probe or factor taken; nothing when no
+/// step was taken or the count went back (the physics of another scene).
+std::optional<double> meanStepMs(uint64_t stepsAtStart, double totalMsAtStart,
+                                 uint64_t stepsAtEnd, double totalMsAtEnd);
 
 }  // namespace sculpt::app

@@ -213,7 +213,8 @@ void SculptApp::syncScene() {
   if (controller_->fetchNewer(latest_)) {
     sceneChanged_ = true;
     if (recording_->isLive()) view_.setFrame(latest_, model_.display);
-    model_.status.simulationMs = latest_.stepMs;
+    // The last step's time until a window of this scene's steps gives their mean (below).
+    if (latest_.sceneId != rateWindowSceneId_) model_.status.simulationMs = latest_.stepMs;
     model_.status.simulatedTime = latest_.simulatedTime;
     model_.status.physicsReady = latest_.physicsReady;
     if (latest_.physicsReady && !physicsReported_) {
@@ -242,8 +243,15 @@ void SculptApp::syncScene() {
         static_cast<double>(latest_.version - rateWindowVersion_) / window;
     model_.status.realTimeFactor =
         realTimeFactor(rateWindowSimulatedTime_, latest_.simulatedTime, window);
+    if (latest_.sceneId == rateWindowSceneId_)
+      if (const std::optional<double> mean = meanStepMs(
+              rateWindowSteps_, rateWindowStepMsTotal_, latest_.steps, latest_.stepMsTotal))
+        model_.status.simulationMs = *mean;
+    rateWindowSceneId_ = latest_.sceneId;
     rateWindowVersion_ = latest_.version;
     rateWindowSimulatedTime_ = latest_.simulatedTime;
+    rateWindowSteps_ = latest_.steps;
+    rateWindowStepMsTotal_ = latest_.stepMsTotal;
     rateWindowStart_ = Clock::now();
   }
   const BuildStatus build = controller_->buildStatus();

@@ -174,6 +174,9 @@ class SculptApp {
   std::chrono::steady_clock::time_point rateWindowStart_;
   uint64_t rateWindowVersion_ = 0;
   double rateWindowSimulatedTime_ = 0;
+  uint64_t rateWindowSceneId_ = 0;  // the scene whose steps the window counts
+  uint64_t rateWindowSteps_ = 0;
+  double rateWindowStepMsTotal_ = 0;
   bool imguiReady_ = false;
   std::function<void(ImGuiIO&, int)> inputHook_;
   int frameIndex_ = 0;

@@ -135,6 +135,8 @@ StepReport ScenePhysics::stepAfter(const std::shared_future<void>& stateInputs) 
   updateState();
   lastStepMs_ =
       std::chrono::duration<double, std::milli>(std::chrono::steady_clock::now() - start).count();
+  ++stepCount_;
+  stepMsTotal_ += lastStepMs_;
   return lastStep_;
 }
 
@@ -340,6 +342,8 @@ void ScenePhysics::fillFrame(SceneFrame& frame) const {
   else frame.cellStrainEnergy.assign(g.cellElement.size(), 0.0f);
   frame.simulatedTime = simulatedTime();
   frame.stepMs = lastStepMs_;
+  frame.steps = stepCount_;
+  frame.stepMsTotal = stepMsTotal_;
   frame.lastStep = lastStep_;
   frame.physicsReady = true;
   frame.springs.clear();

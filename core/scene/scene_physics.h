@@ -41,6 +41,8 @@ struct SceneFrame {
   std::vector<float> cellYoungs, cellDensity, cellStrainEnergy, cellDamping;
   double simulatedTime = 0.0;  ///< seconds since the last reset
   double stepMs = 0.0;         ///< wall time of the last step with this frame's update
+  uint64_t steps = 0;          ///< steps since the physics was built, its first step included
+  double stepMsTotal = 0.0;    ///< the wall times (as stepMs) of those steps, summed
   StepReport lastStep;
   bool physicsReady = false;   ///< false: the rest shape while phase 2 runs
   /// Springs of the strokes acting now (tools/tool.h; a curve's are not labelled: force NaN).
@@ -152,6 +154,8 @@ class ScenePhysics : private ToolContext {
   double timeOrigin_ = 0.0;
   StepReport lastStep_;
   double lastStepMs_ = 0.0;
+  uint64_t stepCount_ = 0;
+  double stepMsTotal_ = 0.0;
 
   std::optional<MaterialPointLocator> locator_;
   std::unique_ptr<MaterialPicker> picker_;  // over nodes_, made on the first pick after a change

@@ -438,8 +438,13 @@ void SimulationLoop::run() {
       rate = rate_;
     }
     step = physics_->simulator().settings().timeStep;
-    next += std::chrono::duration_cast<Clock::duration>(std::chrono::duration<double>(step / rate));
-    if (const Clock::time_point now = Clock::now(); next <= now) next = now;  // behind: rebase
+    const auto share =
+        std::chrono::duration_cast<Clock::duration>(std::chrono::duration<double>(step / rate));
+    next += share;
+    // A late step is made up by the next ones starting at once; further behind than a few
+    // shares (the simulation slower than the clock, a stall), the clock is rebased to that lag.
+    if (const Clock::time_point now = Clock::now(); next < now - kCatchUpSteps * share)
+      next = now - kCatchUpSteps * share;
   }
 }
 

@@ -7,7 +7,9 @@
 // step, rate the wanted ratio of simulated to real time, 1 by default), so the simulated time
 // advances at `rate` whatever else happens. Commands never wake it early and never skip a step:
 // a tool updated at 1 kHz has its newest input applied once per step. When a step takes longer
-// than its share, the next one starts at once and the clock is rebased (no burst to catch up).
+// than its share, the next ones start at once until the clock is caught up, as long as the lag
+// is at most kCatchUpSteps shares; beyond that the clock is rebased to that lag (a simulation
+// slower than the clock runs flat out, and a stall is not followed by a long burst).
 // While paused, commands are applied as they come (no step) and the state is published.
 //
 // What leaves the loop:
@@ -58,6 +60,9 @@ struct SceneEdits {
 
 class SimulationLoop {
  public:
+  /// How far behind the clock (in steps' shares of wall time) late steps are made up.
+  static constexpr int kCatchUpSteps = 4;
+
   /// threaded: a simulation thread runs the loop; otherwise iterate() does. Starts playing.
   explicit SimulationLoop(bool threaded);
   ~SimulationLoop();

@@ -2,6 +2,8 @@
 
 #include <gtest/gtest.h>
 
+#include <cmath>
+
 namespace sculpt::app {
 namespace {
 
@@ -20,6 +22,9 @@ TEST(RealTimeFactor, IsSimulatedSecondsPerWallSecond) {
   EXPECT_FALSE(behindRealTime(*fast));
   EXPECT_EQ(realTimeLabel(12.4), "12x real time");
   EXPECT_FALSE(behindRealTime(1.0));
+  // A simulation on pace whose window caught 58 of its 60 steps, and one that lost 6.
+  EXPECT_FALSE(behindRealTime(58.0 / 60.0));
+  EXPECT_TRUE(behindRealTime(54.0 / 60.0));
 }
 
 TEST(RealTimeFactor, NothingForAResetOrAnEmptyWindow) {
@@ -29,6 +34,24 @@ TEST(RealTimeFactor, NothingForAResetOrAnEmptyWindow) {
   const std::optional<double> paused = realTimeFactor(3.0, 3.0, 1.0);
   ASSERT_TRUE(paused);
   EXPECT_EQ(*paused, 0.0);
+}
+
+TEST(MeanStepMs, IsTheWindowsStepTimeOverItsSteps) {
+  // 60 steps in the window that took 372 ms together: 6.2 ms each.
+  const std::optional<double> mean = meanStepMs(120, 1000.0, 180, 1372.0);
+  ASSERT_TRUE(mean);
+  EXPECT_DOUBLE_EQ(*mean, 6.2);
+  // One slow step among fast ones weighs by its share, not as the last step's time would.
+  const std::optional<double> withSlow = meanStepMs(0, 0.0, 10, 9 * 5.0 + 41.0);
+  ASSERT_TRUE(withSlow);
+  EXPECT_DOUBLE_EQ(*withSlow, 8.6);
+}
+
+TEST(MeanStepMs, NothingWithoutStepsOrWhenTheCountWentBack) {
+  EXPECT_FALSE(meanStepMs(40, 250.0, 40, 250.0)) << "paused: no step in the window";
+  EXPECT_FALSE(meanStepMs(400, 2600.0, 30, 300.0)) << "another scene's physics counts anew";
+  EXPECT_FALSE(meanStepMs(10, 100.0, 20, 90.0)) << "summed times never go back";
+  EXPECT_FALSE(meanStepMs(10, 100.0, 20, std::nan("")));
 }
 
 }  // namespace
