@@ -149,8 +149,11 @@ TEST(SimulationLoop, StepsAtTheSetRateWhileAToolIsUpdatedAt1kHz) {
   std::shared_ptr<ProbeChannel> probe = loop.openProbe();
   install(loop, std::move(physics));
 
-  // Let it settle into its pace, then drag a pull stroke with an update every millisecond.
-  std::this_thread::sleep_for(std::chrono::milliseconds(300));
+  // Let it settle into its pace (its first steps may run late, a sanitizer build's above all,
+  // and the loop makes up as many as kCatchUpSteps of them), then drag a pull stroke with an
+  // update every millisecond.
+  std::this_thread::sleep_for(std::chrono::duration<double>(
+      std::max(0.3, (SimulationLoop::kCatchUpSteps + 2) * period)));
   ToolInput input;
   input.position = input.restPoint.emplace(1.5, 1.5, 1.5);
   const uint64_t stroke =
