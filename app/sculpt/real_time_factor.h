@@ -3,9 +3,12 @@
 // status strip shows it ("0.28x real time", amber below 1x, when a stylus or a recording would
 // feel the solid lag behind the hand), and what its steps cost over the same window.
 
+#include <chrono>
 #include <cstdint>
 #include <optional>
 #include <string>
+
+#include "scene/scene_physics.h"
 
 namespace sculpt::app {
 
@@ -29,5 +32,22 @@ inline bool behindRealTime(double factor) { return factor < 0.95; }
 /// step was taken or the count went back (the physics of another scene).
 std::optional<double> meanStepMs(uint64_t stepsAtStart, double totalMsAtStart,
                                  uint64_t stepsAtEnd, double totalMsAtEnd);
+
+/// Where the simulation stood when the UI looked: the newest frame's counts, and the clock.
+struct PaceMark {
+  std::chrono::steady_clock::time_point at;
+  uint64_t sceneId = 0, version = 0, steps = 0;
+  double stepMsTotal = 0, simulatedTime = 0;
+};
+PaceMark paceMark(const SceneFrame& frame, std::chrono::steady_clock::time_point at);
+
+/// From one mark to a later one: frames published per second, and, within one scene's physics,
+/// the real-time factor and the mean step time as above.
+struct Pace {
+  double wallSeconds = 0, framesPerSecond = 0;
+  uint64_t steps = 0;
+  std::optional<double> realTimeFactor, meanStepMs;
+};
+Pace paceBetween(const PaceMark& start, const PaceMark& end);
 
 }  // namespace sculpt::app

@@ -118,7 +118,7 @@ SculptApp::SculptApp(GLFWwindow* window, const Options& options, Clock::time_poi
   // A lost display ends the process from inside an X call; the unsaved work is kept first.
   onDisplayLoss(
       [](void* app) { static_cast<SculptApp*>(app)->keepUnsavedWork("display lost"); }, this);
-  lastFrameTime_ = rateWindowStart_ = Clock::now();
+  lastFrameTime_ = rateMark_.at = Clock::now();
   windowReadySeconds_ = secondsSince(started_);
 }
 
@@ -214,12 +214,13 @@ void SculptApp::syncScene() {
     sceneChanged_ = true;
     if (recording_->isLive()) view_.setFrame(latest_, model_.display);
     // The last step's time until a window of this scene's steps gives their mean (below).
-    if (latest_.sceneId != rateWindowSceneId_) model_.status.simulationMs = latest_.stepMs;
+    if (latest_.sceneId != rateMark_.sceneId) model_.status.simulationMs = latest_.stepMs;
     model_.status.simulatedTime = latest_.simulatedTime;
     model_.status.physicsReady = latest_.physicsReady;
     if (latest_.physicsReady && !physicsReported_) {
       physicsReported_ = true;
       std::printf("simulation running after %.2f s\n", secondsSince(started_));
+      runMark_ = paceMark(latest_, Clock::now());
       std::fflush(stdout);
     }
     if (deferredScript_ && latest_.physicsReady && scriptSceneId_ != 0 &&
@@ -237,22 +238,13 @@ void SculptApp::syncScene() {
   stylus_.attach(controller_->loop(), view_.sharedGeometry(), controller_->settings(),
                  latest_.physicsReady);
   stylus_.setView(camera_);
-  const double window = secondsSince(rateWindowStart_);
-  if (window > 1.0) {
-    model_.status.stepsPerSecond =
-        static_cast<double>(latest_.version - rateWindowVersion_) / window;
-    model_.status.realTimeFactor =
-        realTimeFactor(rateWindowSimulatedTime_, latest_.simulatedTime, window);
-    if (latest_.sceneId == rateWindowSceneId_)
-      if (const std::optional<double> mean = meanStepMs(
-              rateWindowSteps_, rateWindowStepMsTotal_, latest_.steps, latest_.stepMsTotal))
-        model_.status.simulationMs = *mean;
-    rateWindowSceneId_ = latest_.sceneId;
-    rateWindowVersion_ = latest_.version;
-    rateWindowSimulatedTime_ = latest_.simulatedTime;
-    rateWindowSteps_ = latest_.steps;
-    rateWindowStepMsTotal_ = latest_.stepMsTotal;
-    rateWindowStart_ = Clock::now();
+  if (secondsSince(rateMark_.at) > 1.0) {
+    const PaceMark mark = paceMark(latest_, Clock::now());
+    const Pace pace = paceBetween(rateMark_, mark);
+    model_.status.stepsPerSecond = pace.framesPerSecond;
+    model_.status.realTimeFactor = pace.realTimeFactor;
+    if (pace.meanStepMs) model_.status.simulationMs = *pace.meanStepMs;
+    rateMark_ = mark;
   }
   const BuildStatus build = controller_->buildStatus();
   if (!build.error.empty() && build.error != model_.status.build.error) {

@@ -26,6 +26,7 @@
 #include "sculpt/navigation.h"
 #include "sculpt/options.h"
 #include "sculpt/panels.h"
+#include "sculpt/real_time_factor.h"
 #include "scene/scene_controller.h"
 #include "sculpt/scene_view.h"
 #include "sculpt/stylus_device.h"
@@ -99,6 +100,8 @@ class SculptApp {
   void closeOnTerminationSignal();
   /// Writes the recovery file of unsaved work (no GLFW or GL calls); `reason` starts its message.
   void keepUnsavedWork(const char* reason);
+  /// At the window's close: how fast the simulation ran since it started, on stdout.
+  void reportRun();
   void handleInput(const ViewRect& view);
   // Tools (sculpt_tools.cpp)
   struct SurfaceHit {
@@ -171,12 +174,8 @@ class SculptApp {
   SceneFrame latest_;
   render::GpuTimer sceneTimer_;
   std::chrono::steady_clock::time_point lastFrameTime_;
-  std::chrono::steady_clock::time_point rateWindowStart_;
-  uint64_t rateWindowVersion_ = 0;
-  double rateWindowSimulatedTime_ = 0;
-  uint64_t rateWindowSceneId_ = 0;  // the scene whose steps the window counts
-  uint64_t rateWindowSteps_ = 0;
-  double rateWindowStepMsTotal_ = 0;
+  PaceMark rateMark_;  // the start of the status strip's one-second window
+  std::optional<PaceMark> runMark_;  // the simulation as first seen running
   bool imguiReady_ = false;
   std::function<void(ImGuiIO&, int)> inputHook_;
   int frameIndex_ = 0;

@@ -144,7 +144,21 @@ int SculptApp::runWindow() {
     glfwSwapBuffers(window_);
     busyFrames = sceneChanged_ || !model_.toasts.empty() ? 3 : busyFrames - 1;
   }
+  reportRun();
   return terminatedBy_ != 0 ? 128 + terminatedBy_ : 0;  // as a shell reports a signal's end
+}
+
+void SculptApp::reportRun() {
+  controller_->fetchNewer(latest_);
+  if (!runMark_) return;
+  const Pace pace = paceBetween(*runMark_, paceMark(latest_, Clock::now()));
+  if (!pace.meanStepMs) return;  // another scene since, or no step
+  char factor[48] = "reset meanwhile";
+  if (pace.realTimeFactor)
+    std::snprintf(factor, sizeof factor, "%.3fx real time", *pace.realTimeFactor);
+  std::printf("simulation ran %.2f s: %llu steps, %.1f ms each on average, %s\n", pace.wallSeconds,
+              static_cast<unsigned long long>(pace.steps), *pace.meanStepMs, factor);
+  std::fflush(stdout);
 }
 
 void SculptApp::headlessFrame(const std::string& screenshot) {

@@ -5,6 +5,8 @@
 
 #include <gtest/gtest.h>
 
+#include <cstdio>
+
 #include <cstdlib>
 #include <filesystem>
 #include <fstream>
@@ -194,6 +196,21 @@ TEST_F(HeadlessWindow, WindowWithSimulationWorkerRunsAndQuits) {
   std::ifstream out(dir_ / "out.txt");
   const std::string text((std::istreambuf_iterator<char>(out)), std::istreambuf_iterator<char>());
   EXPECT_NE(text.find("first frame with the scene after"), std::string::npos) << text;
+  // At the close, how fast it ran: the steps of 1/60 s it counted are the simulated time it
+  // reports, the window at least the second it was open after the first frame.
+  const size_t ran = text.find("simulation ran ");
+  ASSERT_NE(ran, std::string::npos) << text;
+  double seconds = 0, meanMs = 0, factor = 0;
+  unsigned long long steps = 0;
+  ASSERT_EQ(std::sscanf(text.c_str() + ran,
+                        "simulation ran %lf s: %llu steps, %lf ms each on average, %lfx real time",
+                        &seconds, &steps, &meanMs, &factor),
+            4)
+      << text;
+  EXPECT_GE(seconds, 1.0);
+  EXPECT_GT(steps, 0u);
+  EXPECT_GT(meanMs, 0.0);
+  EXPECT_NEAR(factor * seconds, static_cast<double>(steps) / 60.0, 0.01) << text;
 }
 
 // The window remembers the user's things: after a session with a scene, the preferences file
