@@ -54,6 +54,21 @@ double medianStepSeconds(ScenePhysics& physics) {
   return samples[samples.size() / 2];
 }
 
+// The wall and simulated times of every step a loop takes, recorded by its step observer.
+// Declared before the loop, so that it outlives the loop's thread.
+struct StepLog {
+  std::mutex mutex;
+  std::vector<double> wall, simulated;
+  const Clock::time_point origin = Clock::now();
+  // Records a step; returns how many are recorded.
+  size_t record(const StepState& state) {
+    const std::lock_guard lock(mutex);
+    wall.push_back(seconds(Clock::now() - origin));
+    simulated.push_back(state.simulatedTime);
+    return wall.size();
+  }
+};
+
 // The status strip's step time is the mean over a window of frames: each frame carries the
 // steps so far and their summed times, a reset included.
 TEST(ScenePhysicsSteps, FramesCountTheStepsAndSumTheirTimes) {
@@ -89,32 +104,24 @@ TEST(SimulationLoop, LateStepsAreMadeUpByTheNextOnes) {
   // A share of 40 ms, or of eight steps of this build where that is longer.
   const double share = std::max(0.04, 8.0 * medianStepSeconds(*physics));
   const double rate = settings.timeStep / share;
-  std::mutex mutex;
-  std::vector<double> stepWall, stepSimulated;
-  const Clock::time_point origin = Clock::now();
+  StepLog log;
   SimulationLoop loop(true);
   loop.setRealTimeRate(rate);
   loop.addStepObserver([&](const StepState& state) {
-    size_t steps = 0;
-    {
-      const std::lock_guard lock(mutex);
-      stepWall.push_back(seconds(Clock::now() - origin));
-      stepSimulated.push_back(state.simulatedTime);
-      steps = stepWall.size();
-    }
-    if (steps % 4 == 0) std::this_thread::sleep_for(std::chrono::duration<double>(3.0 * share));
+    if (log.record(state) % 4 == 0)
+      std::this_thread::sleep_for(std::chrono::duration<double>(3.0 * share));
   });
   install(loop, std::move(physics));
   std::this_thread::sleep_for(std::chrono::duration<double>(std::max(2.0, 50.0 * share)));
   loop.setPlaying(false);
 
-  const std::lock_guard lock(mutex);
+  const std::lock_guard lock(log.mutex);
   // From the first step after the first long one to the last step at the same place of its
   // group of four: whole groups.
-  ASSERT_GE(stepWall.size(), 21u);
-  const size_t first = 4, last = first + 4 * ((stepWall.size() - 1 - first) / 4);
-  const double simulated = stepSimulated[last] - stepSimulated[first];
-  const double wall = stepWall[last] - stepWall[first];
+  ASSERT_GE(log.wall.size(), 21u);
+  const size_t first = 4, last = first + 4 * ((log.wall.size() - 1 - first) / 4);
+  const double simulated = log.simulated[last] - log.simulated[first];
+  const double wall = log.wall[last] - log.wall[first];
   std::printf("[ measured ] %zu steps, every fourth %.0f ms long: simulated %.3f s in %.3f s wall, "
               "ratio %.4f (set %.4f)\n",
               last - first, 3e3 * share, simulated, wall, simulated / wall, rate);
@@ -135,17 +142,10 @@ TEST(SimulationLoop, StepsAtTheSetRateWhileAToolIsUpdatedAt1kHz) {
   const double drag = std::max(2.0, 12.0 * period);
   std::printf("[ measured ] this build steps block3 at %.2fx real time\n",
               settings.timeStep / stepSeconds);
-  // What the observer writes lives longer than the loop (declared after it).
-  std::mutex mutex;
-  std::vector<double> stepWall, stepSimulated;
-  const Clock::time_point origin = Clock::now();
+  StepLog log;
   SimulationLoop loop(true);
   loop.setRealTimeRate(rate);
-  loop.addStepObserver([&](const StepState& state) {
-    const std::lock_guard lock(mutex);
-    stepWall.push_back(seconds(Clock::now() - origin));
-    stepSimulated.push_back(state.simulatedTime);
-  });
+  loop.addStepObserver([&](const StepState& state) { log.record(state); });
   std::shared_ptr<ProbeChannel> probe = loop.openProbe();
   install(loop, std::move(physics));
 
@@ -169,21 +169,22 @@ TEST(SimulationLoop, StepsAtTheSetRateWhileAToolIsUpdatedAt1kHz) {
     next += std::chrono::milliseconds(1);
     std::this_thread::sleep_until(next);
   }
-  const double windowStart = seconds(start - origin), windowEnd = seconds(Clock::now() - origin);
+  const double windowStart = seconds(start - log.origin);
+  const double windowEnd = seconds(Clock::now() - log.origin);
   const SceneProbe seen = probe->read();
   loop.endStroke(stroke, input);
 
-  const std::lock_guard lock(mutex);
+  const std::lock_guard lock(log.mutex);
   // The steps inside the window of updates and the simulated time they covered.
   std::vector<size_t> inside;
-  for (size_t i = 0; i < stepWall.size(); ++i)
-    if (stepWall[i] >= windowStart && stepWall[i] <= windowEnd) inside.push_back(i);
+  for (size_t i = 0; i < log.wall.size(); ++i)
+    if (log.wall[i] >= windowStart && log.wall[i] <= windowEnd) inside.push_back(i);
   ASSERT_GE(inside.size(), 4u);
-  const double simulated = stepSimulated[inside.back()] - stepSimulated[inside.front()];
-  const double wall = stepWall[inside.back()] - stepWall[inside.front()];
+  const double simulated = log.simulated[inside.back()] - log.simulated[inside.front()];
+  const double wall = log.wall[inside.back()] - log.wall[inside.front()];
   double shortest = 1e9;
   for (size_t k = 1; k < inside.size(); ++k)
-    shortest = std::min(shortest, stepWall[inside[k]] - stepWall[inside[k - 1]]);
+    shortest = std::min(shortest, log.wall[inside[k]] - log.wall[inside[k - 1]]);
   std::printf("[ measured ] %d updates in %.3f s; %zu steps; simulated %.4f s in %.4f s wall: "
               "ratio %.4f (set %.3f); shortest step interval %.2f ms (period %.2f ms)\n",
               updates, windowEnd - windowStart, inside.size(), simulated, wall, simulated / wall,
