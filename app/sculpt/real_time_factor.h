@@ -1,6 +1,6 @@
 #pragma once
 // How the simulation keeps up with the clock: simulated seconds per wall-clock second, as the
-// status strip shows it ("0.28x real time", amber below 1x, when a stylus or a recording would
+// status strip shows it ("0.28x real time", amber below 0.95x, when a stylus or a recording would
 // feel the solid lag behind the hand), and what its steps cost over the same window.
 
 #include <chrono>
