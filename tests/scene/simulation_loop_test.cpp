@@ -101,8 +101,9 @@ TEST(ScenePhysicsSteps, FramesCountTheStepsAndSumTheirTimes) {
 TEST(SimulationLoop, LateStepsAreMadeUpByTheNextOnes) {
   SceneSettings settings;
   std::unique_ptr<ScenePhysics> physics = blockPhysics(settings);
-  // A share of 40 ms, or of eight steps of this build where that is longer.
-  const double share = std::max(0.04, 8.0 * medianStepSeconds(*physics));
+  // A share of 40 ms, or of sixteen steps of this build where that is longer: the three steps
+  // after a long one keep pace even where they take four times the median (a loaded machine).
+  const double share = std::max(0.04, 16.0 * medianStepSeconds(*physics));
   const double rate = settings.timeStep / share;
   StepLog log;
   SimulationLoop loop(true);
