@@ -113,7 +113,7 @@ TEST(SimulationLoop, LateStepsAreMadeUpByTheNextOnes) {
       std::this_thread::sleep_for(std::chrono::duration<double>(3.0 * share));
   });
   install(loop, std::move(physics));
-  std::this_thread::sleep_for(std::chrono::duration<double>(std::max(2.0, 50.0 * share)));
+  std::this_thread::sleep_for(std::chrono::duration<double>(std::max(2.0, 30.0 * share)));
   loop.setPlaying(false);
 
   const std::lock_guard lock(log.mutex);
