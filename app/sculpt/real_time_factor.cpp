@@ -26,16 +26,16 @@ std::string realTimeLabel(double factor) {
 }
 
 PaceMark paceMark(const SceneFrame& frame, std::chrono::steady_clock::time_point at) {
-  return {at, frame.sceneId, frame.version, frame.steps, frame.stepMsTotal, frame.simulatedTime};
+  return {at, frame.sceneId, frame.steps, frame.stepMsTotal, frame.simulatedTime};
 }
 
 Pace paceBetween(const PaceMark& start, const PaceMark& end) {
   Pace pace;
   pace.wallSeconds = std::chrono::duration<double>(end.at - start.at).count();
-  if (pace.wallSeconds > 0.0 && end.version >= start.version)
-    pace.framesPerSecond = static_cast<double>(end.version - start.version) / pace.wallSeconds;
-  if (end.sceneId != start.sceneId) return pace;
-  if (end.steps >= start.steps) pace.steps = end.steps - start.steps;
+  if (end.sceneId != start.sceneId || end.steps < start.steps) return pace;
+  pace.steps = end.steps - start.steps;
+  if (pace.wallSeconds > 0.0)
+    pace.stepsPerSecond = static_cast<double>(pace.steps) / pace.wallSeconds;
   pace.realTimeFactor = realTimeFactor(start.simulatedTime, end.simulatedTime, pace.wallSeconds);
   pace.meanStepMs = meanStepMs(start.steps, start.stepMsTotal, end.steps, end.stepMsTotal);
   return pace;

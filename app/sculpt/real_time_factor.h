@@ -36,17 +36,18 @@ std::optional<double> meanStepMs(uint64_t stepsAtStart, double totalMsAtStart,
 /// Where the simulation stood when the UI looked: the newest frame's counts, and the clock.
 struct PaceMark {
   std::chrono::steady_clock::time_point at;
-  uint64_t sceneId = 0, version = 0, steps = 0;
+  uint64_t sceneId = 0, steps = 0;
   double stepMsTotal = 0, simulatedTime = 0;
 };
 PaceMark paceMark(const SceneFrame& frame, std::chrono::steady_clock::time_point at);
 
-/// From one mark to a later one: frames published per second, and, within one scene's physics,
-/// the real-time factor and the mean step time as above.
+/// From one mark to a later one within one scene's physics: the steps taken, per second, the
+/// real-time factor and the mean step time as above (nothing but the wall time across a change
+/// of scene, whose counts start anew).
 struct Pace {
-  double wallSeconds = 0, framesPerSecond = 0;
+  double wallSeconds = 0;
   uint64_t steps = 0;
-  std::optional<double> realTimeFactor, meanStepMs;
+  std::optional<double> stepsPerSecond, realTimeFactor, meanStepMs;
 };
 Pace paceBetween(const PaceMark& start, const PaceMark& end);
 

@@ -241,7 +241,7 @@ void SculptApp::syncScene() {
   if (secondsSince(rateMark_.at) > 1.0) {
     const PaceMark mark = paceMark(latest_, Clock::now());
     const Pace pace = paceBetween(rateMark_, mark);
-    model_.status.stepsPerSecond = pace.framesPerSecond;
+    if (pace.stepsPerSecond) model_.status.stepsPerSecond = *pace.stepsPerSecond;
     model_.status.realTimeFactor = pace.realTimeFactor;
     if (pace.meanStepMs) model_.status.simulationMs = *pace.meanStepMs;
     rateMark_ = mark;

@@ -56,13 +56,14 @@ TEST(MeanStepMs, NothingWithoutStepsOrWhenTheCountWentBack) {
 
 TEST(PaceBetween, FramesStepsRealTimeAndMeanStepWithinOneScene) {
   const auto origin = std::chrono::steady_clock::now();
-  const PaceMark start{origin, 7, 100, 40, 300.0, 2.0};
-  // 2 s later: 110 frames published, 120 steps of 1/60 s that took 1500 ms together.
-  const PaceMark end{origin + std::chrono::seconds(2), 7, 210, 160, 1800.0, 4.0};
+  const PaceMark start{origin, 7, 40, 300.0, 2.0};
+  // 2 s later: 120 steps of 1/60 s that took 1500 ms together.
+  const PaceMark end{origin + std::chrono::seconds(2), 7, 160, 1800.0, 4.0};
   const Pace pace = paceBetween(start, end);
   EXPECT_DOUBLE_EQ(pace.wallSeconds, 2.0);
-  EXPECT_DOUBLE_EQ(pace.framesPerSecond, 55.0);
   EXPECT_EQ(pace.steps, 120u);
+  ASSERT_TRUE(pace.stepsPerSecond);
+  EXPECT_DOUBLE_EQ(*pace.stepsPerSecond, 60.0);
   ASSERT_TRUE(pace.realTimeFactor);
   EXPECT_DOUBLE_EQ(*pace.realTimeFactor, 1.0);
   ASSERT_TRUE(pace.meanStepMs);
@@ -71,16 +72,22 @@ TEST(PaceBetween, FramesStepsRealTimeAndMeanStepWithinOneScene) {
   PaceMark other = end;
   other.sceneId = 8;
   const Pace across = paceBetween(start, other);
-  EXPECT_DOUBLE_EQ(across.framesPerSecond, 55.0);
+  EXPECT_DOUBLE_EQ(across.wallSeconds, 2.0);
   EXPECT_EQ(across.steps, 0u);
+  EXPECT_FALSE(across.stepsPerSecond);
   EXPECT_FALSE(across.realTimeFactor);
   EXPECT_FALSE(across.meanStepMs);
+  // Paused while painting: frames are published, no step is taken.
+  const Pace paused = paceBetween(end, PaceMark{end.at + std::chrono::seconds(1), 7, 160,
+                                                1800.0, 4.0});
+  ASSERT_TRUE(paused.stepsPerSecond);
+  EXPECT_EQ(*paused.stepsPerSecond, 0.0);
+  EXPECT_FALSE(paused.meanStepMs);
 }
 
 TEST(PaceBetween, AMarkTakesTheFramesCounts) {
   SceneFrame frame;
   frame.sceneId = 3;
-  frame.version = 12;
   frame.steps = 9;
   frame.stepMsTotal = 81.5;
   frame.simulatedTime = 0.15;
@@ -88,7 +95,6 @@ TEST(PaceBetween, AMarkTakesTheFramesCounts) {
   const PaceMark mark = paceMark(frame, at);
   EXPECT_EQ(mark.at, at);
   EXPECT_EQ(mark.sceneId, 3u);
-  EXPECT_EQ(mark.version, 12u);
   EXPECT_EQ(mark.steps, 9u);
   EXPECT_EQ(mark.stepMsTotal, 81.5);
   EXPECT_EQ(mark.simulatedTime, 0.15);
