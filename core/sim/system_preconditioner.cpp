@@ -96,6 +96,8 @@ class SystemPreconditioner::WorkerFactor {
 
 namespace {
 using Clock = std::chrono::steady_clock;
+// Where the per-kind arrays keep a factor's kind: 0 the stand-in, 1 the rest stiffness.
+int kindIndex(bool restStiffness) { return restStiffness ? 1 : 0; }
 // The default bunny: 0.57 (rotated solves: 3 CG iterations instead of 5); the blocks, the head
 // and the bridge of docs/BENCHMARKS.md at K = 1 and 2: 0.10-0.19 (rotated solves took 1.3-1.9x
 // the iterations).
@@ -255,13 +257,13 @@ SystemPreconditioner::Request SystemPreconditioner::requestOfKind(
     bool restStiffness) const {
   Request request = requestFor(model, a, b, c, freeDofs);
   request.restStiffness = restStiffness;
-  request.base = assembled_[restStiffness ? 1 : 0];
+  request.base = assembled_[kindIndex(restStiffness)];
   return request;
 }
 
 void SystemPreconditioner::adopt(std::unique_ptr<Factor> factor) {
   factor_ = std::move(factor);
-  if (factor_->assembled) assembled_[factor_->restStiffness ? 1 : 0] = factor_->assembled;
+  if (factor_->assembled) assembled_[kindIndex(factor_->restStiffness)] = factor_->assembled;
   ++stats_.factorizations;
   stats_.lastFactorMs = factor_->milliseconds;
   stats_.restStiffness = factor_->restStiffness;
@@ -270,7 +272,7 @@ void SystemPreconditioner::adopt(std::unique_ptr<Factor> factor) {
   // A factor that came behind the materials (painting went on while it was made) never serves
   // a solve unrescaled: its drift is measured from the last factor of its kind that did.
   const bool current = factor_->materialVersion == materialVersion_;
-  freshIterations_ = current ? -1 : kindFreshIterations_[factor_->restStiffness ? 1 : 0];
+  freshIterations_ = current ? -1 : kindFreshIterations_[kindIndex(factor_->restStiffness)];
   firstSolveBehind_ = !current;
   drifted_ = false;
   appliedMaterialVersion_ = ~uint64_t(0);  // the mapping and scaling are redone
@@ -582,7 +584,7 @@ void SystemPreconditioner::reportIterations(int iterations) {
     freshIterations_ = iterations;
   } else if (fresh) {
     if (freshIterations_ < 0 || iterations < freshIterations_) freshIterations_ = iterations;
-    kindFreshIterations_[factor_->restStiffness ? 1 : 0] = freshIterations_;
+    kindFreshIterations_[kindIndex(factor_->restStiffness)] = freshIterations_;
   } else if (drifting) {
     drifted_ = true;
   }
