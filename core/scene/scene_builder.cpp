@@ -10,6 +10,7 @@
 #include "io/control_mesh_json.h"
 #include "io/surface_file.h"
 #include "mesh/boundary_surface.h"
+#include "mesh/closed_surface.h"
 #include "mesh/hexahedron.h"
 #include "mesh/surface_triangles.h"
 #include "mesh/validation.h"
@@ -309,6 +310,7 @@ bool buildSurfacePart(const SceneSolidPart& part, ProgressReporter* progress) {
   geometry.restNormals = vertexNormals(display);
   geometry.triangles = triangulate(display);
   if (geometry.triangles.empty()) throw std::runtime_error("the surface has no faces to draw");
+  geometry.closedOutward = isClosedOutwardSurface(geometry.restPositions, geometry.triangles);
   geometry.surface = std::make_shared<const SurfaceMesh>(std::move(display));
   clock.lap("normals");
 

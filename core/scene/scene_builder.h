@@ -91,6 +91,9 @@ struct SceneGeometry {
   /// Display surface: #V by 3 rest positions and unit normals, 3 vertex indices per triangle.
   Points restPositions, restNormals;
   std::vector<uint32_t> triangles;
+  /// The surface is closed and faces out (mesh/closed_surface.h): seen from outside, its
+  /// triangles that face away from the eye are hidden and need not be drawn.
+  bool closedOutward = false;
   /// The same surface as its file has it (positions in file order, faces with their texture and
   /// normal indices, texture coordinates, normals), for the writers that keep it.
   std::shared_ptr<const SurfaceMesh> surface;
