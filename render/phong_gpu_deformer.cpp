@@ -338,7 +338,9 @@ void PhongGpuDeformer::draw(const glm::mat4& modelView, const glm::mat4& project
     glEnable(GL_POLYGON_OFFSET_FILL);
     glPolygonOffset(1.0f, 1.0f);
   }
+  if (style.cullBackFaces) glEnable(GL_CULL_FACE);  // counter-clockwise triangles face the eye
   drawTriangles(modelView, projection);
+  if (style.cullBackFaces) glDisable(GL_CULL_FACE);
   if (style.wireframe) {
     glDisable(GL_POLYGON_OFFSET_FILL);
     glUniform4f(program.uniform("solidColour"), style.wireColour.x, style.wireColour.y,

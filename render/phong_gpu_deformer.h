@@ -39,6 +39,9 @@ struct SurfaceStyle {
   float fieldLow = 0.0f, fieldHigh = 1.0f;  ///< values at the ends of the colour map
   bool clip = false;                        ///< keep only dot(clipPlane.xyz, x) <= clipPlane.w
   glm::vec4 clipPlane{0.0f, 0.0f, 1.0f, 0.0f};
+  /// Skip the filled triangles that face away from the eye: the same picture for a closed surface
+  /// whose triangles face out, seen from outside and not clipped, in about half the rasterising.
+  bool cullBackFaces = false;
 };
 
 class PhongGpuDeformer {

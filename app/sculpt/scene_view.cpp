@@ -31,6 +31,9 @@ const std::vector<float>* cellField(const SceneFrame& frame, FieldKind field) {
   }
 }
 
+// How far the deformed surface may reach out of its cells' nodes' box, as a fraction of the
+// box's diagonal (Phong deformation bends it between the nodes).
+constexpr float kSurfaceBulge = 0.05f;
 const glm::vec3 kControlColour(0.95f, 0.85f, 0.30f);
 const glm::vec3 kPinnedColour(0.90f, 0.25f, 0.25f);
 const glm::vec3 kSpringColour(1.00f, 0.35f, 0.20f);
@@ -170,6 +173,18 @@ glm::vec4 SceneView::clipPlane(const DisplaySettings& display) const {
   return glm::vec4(normal, offset);
 }
 
+bool cullsBackFaces(bool closedOutward, const DisplaySettings& display,
+                    const glm::mat4& viewProjection, const glm::vec3& low, const glm::vec3& high) {
+  if (!closedOutward || display.clip) return false;
+  for (int corner = 0; corner < 8; ++corner) {
+    const glm::vec4 clip = viewProjection * glm::vec4(corner & 1 ? high.x : low.x,
+                                                      corner & 2 ? high.y : low.y,
+                                                      corner & 4 ? high.z : low.z, 1.0f);
+    if (!(clip.w > 0.0f && clip.z > -clip.w)) return false;  // behind the eye or the near plane
+  }
+  return true;
+}
+
 void SceneView::draw(const glm::mat4& view, const glm::mat4& projection,
                      const DisplaySettings& display, FieldRange range) {
   if (!geometry_) return;
@@ -192,6 +207,16 @@ void SceneView::draw(const glm::mat4& view, const glm::mat4& projection,
     style.fieldLow = range.low, style.fieldHigh = range.high;
     style.clip = display.clip;
     style.clipPlane = plane;
+    if (frame_.nodes.rows() > 0) {
+      // Around the deformed surface: the cells' nodes, with room for the surface to bulge out
+      // of their hull between them.
+      const Eigen::RowVector3d lo = frame_.nodes.colwise().minCoeff();
+      const Eigen::RowVector3d hi = frame_.nodes.colwise().maxCoeff();
+      const glm::vec3 low(lo.x(), lo.y(), lo.z()), high(hi.x(), hi.y(), hi.z());
+      const glm::vec3 room(kSurfaceBulge * glm::length(high - low));
+      style.cullBackFaces =
+          cullsBackFaces(g.closedOutward, display, projection * view, low - room, high + room);
+    }
     deformer_->draw(view, projection, style);
   }
   if (display.clip) {

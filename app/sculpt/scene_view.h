@@ -23,6 +23,13 @@ struct FieldRange {
   float low = 0.0f, high = 1.0f;
 };
 
+/// Whether the surface may be drawn without its back faces (render::SurfaceStyle::cullBackFaces)
+/// and look the same: it is closed and faces out (SceneGeometry::closedOutward), the clipping
+/// plane does not open it, and the box `low`..`high` around it lies wholly beyond the near plane
+/// of `viewProjection`, so that the eye is outside and the near plane does not cut it open.
+bool cullsBackFaces(bool closedOutward, const DisplaySettings& display,
+                    const glm::mat4& viewProjection, const glm::vec3& low, const glm::vec3& high);
+
 class SceneView {
  public:
   SceneView() = default;
