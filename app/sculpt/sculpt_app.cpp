@@ -221,6 +221,7 @@ void SculptApp::syncScene() {
       physicsReported_ = true;
       std::printf("simulation running after %.2f s\n", secondsSince(started_));
       runMark_ = paceMark(latest_, Clock::now());
+      runMarkFrame_ = frameIndex_;
       std::fflush(stdout);
     }
     if (deferredScript_ && latest_.physicsReady && scriptSceneId_ != 0 &&

@@ -100,7 +100,8 @@ class SculptApp {
   void closeOnTerminationSignal();
   /// Writes the recovery file of unsaved work (no GLFW or GL calls); `reason` starts its message.
   void keepUnsavedWork(const char* reason);
-  /// At the window's close: how fast the simulation ran since it started, on stdout.
+  /// At the window's close: how fast the simulation ran since it started, and how many frames
+  /// the window drew meanwhile, on stdout.
   void reportRun();
   void handleInput(const ViewRect& view);
   // Tools (sculpt_tools.cpp)
@@ -176,6 +177,7 @@ class SculptApp {
   std::chrono::steady_clock::time_point lastFrameTime_;
   PaceMark rateMark_;  // the start of the status strip's one-second window
   std::optional<PaceMark> runMark_;  // the simulation as first seen running
+  int runMarkFrame_ = 0;             // frameIndex_ then
   bool imguiReady_ = false;
   std::function<void(ImGuiIO&, int)> inputHook_;
   int frameIndex_ = 0;

@@ -156,8 +156,11 @@ void SculptApp::reportRun() {
   char factor[48] = "reset meanwhile";
   if (pace.realTimeFactor)
     std::snprintf(factor, sizeof factor, "%.3fx real time", *pace.realTimeFactor);
-  std::printf("simulation ran %.2f s: %llu steps, %.1f ms each on average, %s\n", pace.wallSeconds,
-              static_cast<unsigned long long>(pace.steps), *pace.meanStepMs, factor);
+  const int frames = frameIndex_ - runMarkFrame_;
+  std::printf("simulation ran %.2f s: %llu steps, %.1f ms each on average, %s; %d frames drawn, "
+              "%.1f a second\n",
+              pace.wallSeconds, static_cast<unsigned long long>(pace.steps), *pace.meanStepMs,
+              factor, frames, pace.wallSeconds > 0 ? frames / pace.wallSeconds : 0.0);
   std::fflush(stdout);
 }
 

@@ -199,17 +199,22 @@ TEST_F(HeadlessWindow, WindowWithSimulationWorkerRunsAndQuits) {
   // reports, the window at least the second it was open after the first frame.
   const size_t ran = text.find("simulation ran ");
   ASSERT_NE(ran, std::string::npos) << text;
-  double seconds = 0, meanMs = 0, factor = 0;
+  double seconds = 0, meanMs = 0, factor = 0, frameRate = 0;
   unsigned long long steps = 0;
+  int frames = 0;
   ASSERT_EQ(std::sscanf(text.c_str() + ran,
-                        "simulation ran %lf s: %llu steps, %lf ms each on average, %lfx real time",
-                        &seconds, &steps, &meanMs, &factor),
-            4)
+                        "simulation ran %lf s: %llu steps, %lf ms each on average, %lfx real time; "
+                        "%d frames drawn, %lf a second",
+                        &seconds, &steps, &meanMs, &factor, &frames, &frameRate),
+            6)
       << text;
   EXPECT_GE(seconds, 1.0);
   EXPECT_GT(steps, 0u);
   EXPECT_GT(meanMs, 0.0);
   EXPECT_NEAR(factor * seconds, static_cast<double>(steps) / 60.0, 0.01) << text;
+  EXPECT_GT(frames, 0);  // the simulation's states are drawn as they come
+  // To the digits printed: the rate to 0.05, the seconds to 0.005.
+  EXPECT_NEAR(frameRate, frames / seconds, 0.05 + 0.005 * frames / (seconds * seconds)) << text;
 }
 
 // The window remembers the user's things: after a session with a scene, the preferences file
