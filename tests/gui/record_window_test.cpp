@@ -40,12 +40,6 @@ struct FrameTimes {
   }
 };
 
-// While the export writes on the other core, llvmpipe's drawing on the UI thread takes up to
-// 36 ms more in some frames (its CPU time grows by 10-21 ms there, with no extra deformation
-// pass, paused or not): the cost of sharing two cores, the same in milliseconds however fast the
-// frame. A frame that waited for the export would wait for all of its writing, over a second.
-constexpr double kSharedCoresMs = 50.0;
-
 double timedFrame(SculptApp& app) {
   const auto start = Clock::now();
   app.headlessFrame();
@@ -169,12 +163,15 @@ TEST(RecordWindow, RecordsScrubsAndExportsWithoutStallingTheWindow) {
     EXPECT_TRUE(hasToast(app.model(), "wrote " + glb));
     EXPECT_EQ(filesIn(folder).size(), 1u);
 
-    // No frame over twice the median of its export, nor over half again the slowest frame
-    // without an export (the machine's own jitter: under AddressSanitizer the idle frames
-    // reached 1.8x their median, and one export frame in 436 2.3x), nor over the median by
-    // kSharedCoresMs: the worker runs below the window's priority, on its own thread, and never
-    // holds what the frame needs. (ctest runs this test with nothing beside it: another process
-    // on the second core would be measured too.)
+    // No frame over three times the median of its export, nor over half again the slowest
+    // frame without an export: the worker runs below the window's priority, on its own thread,
+    // and never holds what the frame needs, so a frame that waited for it would wait for all of
+    // its writing (over a second; 13x the median when the window waited for the second half).
+    // What the bound leaves room for is the cost of sharing two cores with the export's writing:
+    // llvmpipe's drawing on the UI thread takes up to 36 ms more in some frames (its CPU time
+    // grows by 10-21 ms there, with no extra deformation pass), 2.2x a 26 ms median; under
+    // AddressSanitizer 2.4x, and the idle frames 1.8x their median. (ctest runs this test with
+    // nothing beside it: another process on the second core would be measured too.)
     for (const auto& [name, times] :
          {std::pair{"cancelled export", &cancelled}, std::pair{"export", &written}}) {
       const double median = times->median();
@@ -188,8 +185,7 @@ TEST(RecordWindow, RecordsScrubsAndExportsWithoutStallingTheWindow) {
                   "%zu over 2x (idle: median %.1f ms, max %.1f ms)\n[ measured ] %s\n",
                   name, times->ms.size(), median, times->max(), times->max() / median,
                   times->argmax(), over, idle.median(), idle.max(), all.c_str());
-      EXPECT_LE(times->max(), std::max({2.0 * median, 1.5 * idle.max(), median + kSharedCoresMs}))
-          << name << ": " << all;
+      EXPECT_LE(times->max(), std::max(3.0 * median, 1.5 * idle.max())) << name << ": " << all;
     }
     EXPECT_GE(written.ms.size(), 3u) << "the export ran over several frames";
 
