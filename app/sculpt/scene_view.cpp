@@ -173,9 +173,12 @@ glm::vec4 SceneView::clipPlane(const DisplaySettings& display) const {
   return glm::vec4(normal, offset);
 }
 
-bool cullsBackFaces(bool closedOutward, const DisplaySettings& display,
-                    const glm::mat4& viewProjection, const glm::vec3& low, const glm::vec3& high) {
+bool cullsBackFaces(bool closedOutward, std::span<const Eigen::Matrix3d> nodeGradients,
+                    const DisplaySettings& display, const glm::mat4& viewProjection,
+                    const glm::vec3& low, const glm::vec3& high) {
   if (!closedOutward || display.clip) return false;
+  for (const Eigen::Matrix3d& gradient : nodeGradients)
+    if (!(gradient.determinant() > 0.0)) return false;
   for (int corner = 0; corner < 8; ++corner) {
     const glm::vec4 clip = viewProjection * glm::vec4(corner & 1 ? high.x : low.x,
                                                       corner & 2 ? high.y : low.y,
@@ -214,8 +217,8 @@ void SceneView::draw(const glm::mat4& view, const glm::mat4& projection,
       const Eigen::RowVector3d hi = frame_.nodes.colwise().maxCoeff();
       const glm::vec3 low(lo.x(), lo.y(), lo.z()), high(hi.x(), hi.y(), hi.z());
       const glm::vec3 room(kSurfaceBulge * glm::length(high - low));
-      style.cullBackFaces =
-          cullsBackFaces(g.closedOutward, display, projection * view, low - room, high + room);
+      style.cullBackFaces = cullsBackFaces(g.closedOutward, frame_.gradients, display,
+                                           projection * view, low - room, high + room);
     }
     deformer_->draw(view, projection, style);
   }

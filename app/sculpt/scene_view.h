@@ -8,6 +8,7 @@
 #include <glm/glm.hpp>
 #include <memory>
 #include <optional>
+#include <span>
 
 #include "embed/node_field.h"
 #include "render/line_renderer.h"
@@ -24,11 +25,14 @@ struct FieldRange {
 };
 
 /// Whether the surface may be drawn without its back faces (render::SurfaceStyle::cullBackFaces)
-/// and look the same: it is closed and faces out (SceneGeometry::closedOutward), the clipping
-/// plane does not open it, and the box `low`..`high` around it lies wholly beyond the near plane
-/// of `viewProjection`, so that the eye is outside and the near plane does not cut it open.
-bool cullsBackFaces(bool closedOutward, const DisplaySettings& display,
-                    const glm::mat4& viewProjection, const glm::vec3& low, const glm::vec3& high);
+/// and look the same: it is closed and faces out at rest (SceneGeometry::closedOutward) and the
+/// solid is nowhere turned inside out (every node's deformation gradient has a positive
+/// determinant: where one has not, the surface there faces in, and would show as a hole), the
+/// clipping plane does not open it, and the box `low`..`high` around it lies wholly beyond the
+/// near plane of `viewProjection`, so that the eye is outside and the near plane does not cut it.
+bool cullsBackFaces(bool closedOutward, std::span<const Eigen::Matrix3d> nodeGradients,
+                    const DisplaySettings& display, const glm::mat4& viewProjection,
+                    const glm::vec3& low, const glm::vec3& high);
 
 class SceneView {
  public:

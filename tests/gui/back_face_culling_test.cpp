@@ -1,7 +1,7 @@
 // Back-face culling of the deformed surface: the same picture as without it for a closed surface
 // facing out, seen from outside (the bunny, Phong-deformed, from six sides, compared pixel by
 // pixel), nothing drawn from inside it, and cullsBackFaces' decision: only for a closed surface
-// facing out, not clipped, and wholly beyond the near plane.
+// facing out and nowhere turned inside out, not clipped, and wholly beyond the near plane.
 
 #include <gtest/gtest.h>
 
@@ -141,27 +141,37 @@ TEST_F(BackFaceCulling, FromInsideTheCulledSurfaceIsNotDrawn) {
   EXPECT_EQ(litPixels(drawn(*bunny.deformer, view, projection, true)), 0);
 }
 
-TEST(CullsBackFaces, OnlyAClosedSurfaceFacingOutUnclippedAndBeyondTheNearPlane) {
+TEST(CullsBackFaces, OnlyAClosedUprightSurfaceUnclippedAndBeyondTheNearPlane) {
   const glm::vec3 low(-1.0f), high(1.0f);
   const glm::mat4 perspective = glm::perspective(0.8f, 1.5f, 0.1f, 100.0f);
   const glm::mat4 orthographic = glm::ortho(-3.0f, 3.0f, -2.0f, 2.0f, 0.1f, 100.0f);
   const auto from = [](const glm::vec3& eye) {
     return glm::lookAt(eye, glm::vec3(0.0f), glm::vec3(0, 1, 0));
   };
+  const std::vector<Eigen::Matrix3d> upright(5, Eigen::Matrix3d::Identity() * 1.2);
   app::DisplaySettings display;
-  EXPECT_TRUE(app::cullsBackFaces(true, display, perspective * from({0, 0, 5}), low, high));
-  EXPECT_TRUE(app::cullsBackFaces(true, display, orthographic * from({3, 2, 4}), low, high));
-  EXPECT_FALSE(app::cullsBackFaces(false, display, perspective * from({0, 0, 5}), low, high));
+  const auto culls = [&](const glm::mat4& viewProjection, bool closed = true,
+                         const std::vector<Eigen::Matrix3d>& gradients = {}) {
+    return app::cullsBackFaces(closed, gradients.empty() ? upright : gradients, display,
+                               viewProjection, low, high);
+  };
+  EXPECT_TRUE(culls(perspective * from({0, 0, 5})));
+  EXPECT_TRUE(culls(orthographic * from({3, 2, 4})));
+  EXPECT_FALSE(culls(perspective * from({0, 0, 5}), false));
   // The eye inside the box, at its corner, or so near that the near plane cuts the box.
-  EXPECT_FALSE(app::cullsBackFaces(true, display, perspective * from({0, 0, 0.5f}), low, high));
-  EXPECT_FALSE(app::cullsBackFaces(true, display, perspective * from({1, 1, 1}), low, high));
-  EXPECT_FALSE(app::cullsBackFaces(true, display, perspective * from({0, 0, 1.05f}), low, high));
-  EXPECT_TRUE(app::cullsBackFaces(true, display, perspective * from({0, 0, 1.2f}), low, high));
+  EXPECT_FALSE(culls(perspective * from({0, 0, 0.5f})));
+  EXPECT_FALSE(culls(perspective * from({1, 1, 1})));
+  EXPECT_FALSE(culls(perspective * from({0, 0, 1.05f})));
+  EXPECT_TRUE(culls(perspective * from({0, 0, 1.2f})));
   // Looking away from the box: behind the eye.
-  const glm::mat4 away = glm::lookAt(glm::vec3(0, 0, 5), glm::vec3(0, 0, 10), glm::vec3(0, 1, 0));
-  EXPECT_FALSE(app::cullsBackFaces(true, display, perspective * away, low, high));
+  EXPECT_FALSE(culls(perspective * glm::lookAt(glm::vec3(0, 0, 5), glm::vec3(0, 0, 10),
+                                               glm::vec3(0, 1, 0))));
+  // A node turned inside out (a mirror image there): its part of the surface faces in.
+  std::vector<Eigen::Matrix3d> mirrored = upright;
+  mirrored[3](0, 0) = -0.1;
+  EXPECT_FALSE(culls(perspective * from({0, 0, 5}), true, mirrored));
   display.clip = true;  // the clipping plane opens the surface
-  EXPECT_FALSE(app::cullsBackFaces(true, display, perspective * from({0, 0, 5}), low, high));
+  EXPECT_FALSE(culls(perspective * from({0, 0, 5})));
 }
 
 }  // namespace
