@@ -77,7 +77,7 @@ DeformedBunny deformedBunny() {
                                              X.y(), -s * X.x() + c * X.z()))
                        .transpose();
   }
-  EmbeddedDeformer cpu(bunny.lattice, surface.positions);
+  EmbeddedDeformer cpu(bunny.lattice, surface.positions, embedding);  // for the node gradients
   cpu.setFrame(nodes, InterpolationMethod::Phong);
   bunny.deformer->setFrame(nodes, cpu.nodeGradients(), InterpolationMethod::Phong);
   const Eigen::Vector3d lo = nodes.colwise().minCoeff(), hi = nodes.colwise().maxCoeff();
