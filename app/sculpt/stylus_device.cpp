@@ -72,6 +72,13 @@ void StylusDevice::stop() {
 void StylusDevice::attach(SimulationLoop& loop,
                           const std::shared_ptr<const SceneGeometry>& geometry,
                           const SceneSettings& settings, bool physicsReady) {
+  follow(loop, geometry, settings, physicsReady);
+  shown_ = status();
+}
+
+void StylusDevice::follow(SimulationLoop& loop,
+                          const std::shared_ptr<const SceneGeometry>& geometry,
+                          const SceneSettings& settings, bool physicsReady) {
   if (!wanted_ || !geometry || !physicsReady) {
     if (!wanted_ && session_) stop();
     return;
@@ -131,7 +138,7 @@ haptics::HapticStatus StylusDevice::status() const {
 
 float StylusDevice::forceFraction() const {
   if (!session_) return 0.0f;
-  const haptics::HapticStatus s = session_->status();
+  const haptics::HapticStatus& s = shown_;
   return s.forceLimit > 0 ? static_cast<float>(std::clamp(s.force.norm() / s.forceLimit, 0.0, 1.0))
                           : 0.0f;
 }
@@ -162,7 +169,7 @@ void StylusDevice::drawPanel(ImVec2 viewMin, ImVec2 viewMax) {
     session_->setForceFactor(forceFactor_);
   ImGui::Checkbox("Tint the background with the force", &tint_);
   if (session_) {
-    const haptics::HapticStatus s = session_->status();
+    const haptics::HapticStatus& s = shown_;
     ImGui::Text("%s: %s, %s%s", mock_ ? mock_->info().model.c_str() : "device",
                 s.connected ? "connected" : "not connected", toolLabel(s.tool, paint_),
                 s.stroking ? (s.acting ? ", acting" : ", holding") : "");
@@ -203,7 +210,7 @@ void StylusDevice::drawPanel(ImVec2 viewMin, ImVec2 viewMax) {
 void StylusDevice::drawCursor(ImDrawList* draw, const render::Camera& camera, ImVec2 viewMin,
                               ImVec2 viewMax) const {
   if (!session_) return;
-  const haptics::HapticStatus s = session_->status();
+  const haptics::HapticStatus& s = shown_;
   const int width = std::max(1, static_cast<int>(viewMax.x - viewMin.x));
   const int height = std::max(1, static_cast<int>(viewMax.y - viewMin.y));
   const auto screen = [&](const Eigen::Vector3d& p) {

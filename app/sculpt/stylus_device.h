@@ -38,7 +38,7 @@ class StylusDevice {
   void setSimulated(bool on) { wanted_ = on; }
   bool simulated() const { return wanted_; }
   /// Follows the scene: (re)starts the session on a newly running scene, stops it when the mode
-  /// is off. Call once per frame.
+  /// is off. Call once per frame: it also reads the status the frame shows (shownStatus()).
   void attach(SimulationLoop& loop, const std::shared_ptr<const SceneGeometry>& geometry,
               const SceneSettings& settings, bool physicsReady);
   void stop();
@@ -53,7 +53,11 @@ class StylusDevice {
   /// Zero force until re-armed (the panel's button, Esc in the window).
   void panic();
 
-  /// Force felt as a fraction of the device's limit (0 when off).
+  /// The status read by this frame's attach(): the meter, the cursor and the background's tint
+  /// all show it, so that they agree within a frame (the servo changes it a thousand times a
+  /// second).
+  const haptics::HapticStatus& shownStatus() const { return shown_; }
+  /// Force shown, as a fraction of the device's limit (0 when off).
   float forceFraction() const;
   /// The background's tint in [0, 1]: the force fraction, or 0 when tinting is switched off.
   float backgroundTint() const { return tint_ ? forceFraction() : 0.0f; }
@@ -63,9 +67,13 @@ class StylusDevice {
   void drawCursor(ImDrawList* draw, const render::Camera& camera, ImVec2 viewMin,
                   ImVec2 viewMax) const;
   haptics::HapticTool tool() const { return tool_; }
+  /// The session's status now (the servo's latest).
   haptics::HapticStatus status() const;
 
  private:
+  void follow(SimulationLoop& loop, const std::shared_ptr<const SceneGeometry>& geometry,
+              const SceneSettings& settings, bool physicsReady);
+
   bool wanted_ = false, tint_ = true, paint_ = false;
   haptics::HapticTool tool_ = haptics::HapticTool::Pull;
   float forceFactor_ = 1.0f;
@@ -77,6 +85,7 @@ class StylusDevice {
   std::string devicesError_;
   std::vector<std::shared_ptr<haptics::HidDeviceChannel>> channels_;  // by device id
   Eigen::Vector3d handScene_ = Eigen::Vector3d::Zero();
+  haptics::HapticStatus shown_;
 };
 
 }  // namespace sculpt::app

@@ -10,6 +10,7 @@
 #include <stb_image.h>
 
 #include <chrono>
+#include <cmath>
 #include <cstdlib>
 #include <filesystem>
 #include <thread>
@@ -64,22 +65,25 @@ TEST(StylusWindow, SimulatedDeviceMidPullShowsTheForceInTheMeterAndTheBackground
     left = true;
     const ImVec2 start = mouse;
     double strongest = 0;
-    // The picture is taken mid-drag at a frame that starts with the force felt above 0.5 N (on a
-    // loaded machine some probes are older than the safety's 100 ms and the force fades between
-    // them).
+    // The picture is kept from a frame that shows a force above 0.5 N: 0.5 N of the 3.3 N limit
+    // tints the background by 15%, clear of the grey's rounding. The frame shows the status it
+    // read at its start, which the servo may have faded since the loop read it here (a probe
+    // older than the safety's 100 ms, on a loaded machine or under the sanitizers), so the tint
+    // checked is the one the frame drew with.
     const char* images = std::getenv("SCULPT_SESSION_IMAGES");
     const fs::path shot =
         (images ? fs::path(images) : scratch.path()) / "stylus-simulated-pull.png";
     bool taken = false;
+    float tint = 0.0f;
     for (int k = 1; k <= 80 && !taken; ++k) {
       mouse = ImVec2(start.x + 5.0f * static_cast<float>(std::min(k, 40)), start.y);
       std::this_thread::sleep_for(std::chrono::milliseconds(15));  // servo and simulation run
       const double force = app.stylus().status().force.norm();
       strongest = std::max(strongest, force);
-      // 0.5 N of the 3.3 N limit: a tint of 15%, clear of the grey's rounding (at 0.28 N the
-      // background was r 45, g 43 and the check below failed on a loaded machine).
-      taken = k >= 25 && force > 0.5;
-      app.headlessFrame(taken ? shot.string() : std::string());
+      const bool shoot = k >= 25 && force > 0.5;
+      app.headlessFrame(shoot ? shot.string() : std::string());
+      tint = app.stylus().backgroundTint();
+      taken = shoot && app.stylus().shownStatus().force.norm() > 0.5;
     }
     const haptics::HapticStatus status = app.stylus().status();
     std::printf("[ measured ] mid-pull: |F| = %.3f N of %.1f N (strongest %.3f), acting %d, %s\n",
@@ -90,18 +94,27 @@ TEST(StylusWindow, SimulatedDeviceMidPullShowsTheForceInTheMeterAndTheBackground
     EXPECT_GT(strongest, 0.05) << "the hand feels the pull";
     EXPECT_LE(strongest, status.forceLimit);
     ASSERT_EQ(app.sceneView().frame().springs.size(), 1u) << "the stylus' spring is in the scene";
-    ASSERT_TRUE(taken) << "no frame with the force above 0.5 N";
+    ASSERT_TRUE(taken) << "no frame that showed a force above 0.5 N";
+    EXPECT_FLOAT_EQ(tint, static_cast<float>(app.stylus().shownStatus().force.norm() /
+                                             app.stylus().shownStatus().forceLimit))
+        << "the tint is the force shown, as a fraction of the limit";
     int width = 0, height = 0, channels = 0;
     unsigned char* pixels = stbi_load(shot.c_str(), &width, &height, &channels, 3);
     ASSERT_NE(pixels, nullptr) << shot;
-    // The background at the view's upper right: redder than the default grey (0.16, 0.17, 0.19)
-    // by the force fraction.
+    // The background at the view's upper right: the default grey (0.16, 0.17, 0.19) saturated
+    // towards red by the tint (app_clock.h's clearBackground).
     const int x = static_cast<int>(view.max.x) - 30, y = static_cast<int>(view.min.y) + 30;
     const unsigned char* corner = pixels + 3 * (y * width + x);
     const int red = corner[0], green = corner[1];
     stbi_image_free(pixels);
-    std::printf("[ measured ] background pixel r=%d g=%d (default 41, 43)\n", red, green);
-    EXPECT_GT(red, green + 2) << "the background is tinted by the force felt";
+    const int expectedRed = static_cast<int>(std::lround(255.0 * (0.16 + 0.5 * tint)));
+    const int expectedGreen = static_cast<int>(std::lround(255.0 * (0.17 - 0.08 * tint)));
+    std::printf("[ measured ] background pixel r=%d g=%d at tint %.3f (expected %d, %d; "
+                "untinted 41, 43)\n",
+                red, green, tint, expectedRed, expectedGreen);
+    EXPECT_NEAR(red, expectedRed, 1) << "the background is tinted by the force shown";
+    EXPECT_NEAR(green, expectedGreen, 1);
+    EXPECT_GT(red, green + 2);
     left = false;
     app.headlessFrame();
   }
