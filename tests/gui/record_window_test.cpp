@@ -168,10 +168,11 @@ TEST(RecordWindow, RecordsScrubsAndExportsWithoutStallingTheWindow) {
     // and never holds what the frame needs, so a frame that waited for it would wait for all of
     // its writing (over a second; 13x the median when the window waited for the second half).
     // What the bound leaves room for is the cost of sharing two cores with the export's writing:
-    // llvmpipe's drawing on the UI thread takes up to 36 ms more in some frames (its CPU time
-    // grows by 10-21 ms there, with no extra deformation pass), 2.2x a 26 ms median; under
-    // AddressSanitizer 2.4x, and the idle frames 1.8x their median. (ctest runs this test with
-    // nothing beside it: another process on the second core would be measured too.)
+    // up to 2.2x a 25-29 ms median in the export's first frames, on the programs' heap as here
+    // (glibc's heap as it comes added page faults on the UI thread: 1,000-2,000 in some frames,
+    // 12-21 ms of kernel time); under AddressSanitizer 2.4x, and the idle frames 1.8x their
+    // median. (ctest runs this test with nothing beside it: another process on the second core
+    // would be measured too.)
     for (const auto& [name, times] :
          {std::pair{"cancelled export", &cancelled}, std::pair{"export", &written}}) {
       const double median = times->median();
