@@ -126,6 +126,7 @@ SculptApp::~SculptApp() {
   onDisplayLoss(nullptr, nullptr);
   if (!options_.headless) savePreferencesOnClose();
   export_.reset();     // cancels an export in flight
+  stylus_.stop();      // its session's thread queues strokes on the controller's loop
   recording_.reset();  // its recorder observes the controller's loop
   controller_.reset();  // stop the simulation before the GL objects go
   if (imguiReady_) {

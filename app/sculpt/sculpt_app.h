@@ -69,6 +69,8 @@ class SculptApp {
   /// Renders one frame offscreen as runHeadless does (after setInputHook) and, when `screenshot`
   /// is not empty, writes it there.
   void headlessFrame(const std::string& screenshot = {});
+  /// Writes the frame last drawn by headlessFrame() to `path`, as its `screenshot` would have.
+  void screenshotLastFrame(const std::string& path);
   /// For tests and the scripted screenshots: the panels' model (tools can be chosen in it), the
   /// document, the camera, the 3D view's rectangle and what it shows.
   AppModel& model() { return model_; }

@@ -171,12 +171,14 @@ void SculptApp::headlessFrame(const std::string& screenshot) {
   target.bind();
   frame(width, height, false);
   glFinish();
-  if (!screenshot.empty()) {
-    ScreenshotSettings settings = model_.screenshot;
-    settings.includePanels = !options_.noUi;
-    writeScreenshot(screenshot, settings);
-  }
+  if (!screenshot.empty()) screenshotLastFrame(screenshot);
   glBindFramebuffer(GL_FRAMEBUFFER, 0);
+}
+
+void SculptApp::screenshotLastFrame(const std::string& path) {
+  ScreenshotSettings settings = model_.screenshot;
+  settings.includePanels = !options_.noUi;
+  writeScreenshot(path, settings);
 }
 
 int SculptApp::runHeadless() {
