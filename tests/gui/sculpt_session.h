@@ -39,11 +39,15 @@ class SculptSession : public ::testing::Test {
   }
   // The application on `scene` (empty: the default bunny), as `sculpt --headless` would run it.
   void open(const std::string& scene = {}, bool headless = true) {
-    app_.reset();
     Options options;
     options.headless = headless;
-    options.width = 1280, options.height = 800;
     options.scene = scene;
+    open(options);
+  }
+  // The application with `options`, in the 1280 x 800 window.
+  void open(Options options) {
+    app_.reset();
+    options.width = 1280, options.height = 800;
     app_ = std::make_unique<SculptApp>(window_, options, std::chrono::steady_clock::now(),
                                        LoadedPreferences{}, folder_ / "preferences.json");
     app_->setInputHook([this](ImGuiIO& io, int) {

@@ -3,91 +3,55 @@
 // the background tinted by the force (McDonnell-Qin Fig. 8). The screenshot goes to
 // $SCULPT_SESSION_IMAGES (docs/images/ when the documentation's pictures are made).
 
-#include "render/gl.h"
-
-#include <GLFW/glfw3.h>
-#include <gtest/gtest.h>
 #include <stb_image.h>
 
+#include <algorithm>
 #include <chrono>
 #include <cmath>
-#include <cstdlib>
 #include <filesystem>
-#include <memory>
 #include <thread>
 
-#include "sculpt/sculpt_app.h"
-#include "support/gl_context.h"
-#include "support/scratch_directory.h"
+#include "gui/sculpt_session.h"
 
 namespace sculpt::app {
 namespace {
 
 namespace fs = std::filesystem;
 
-// The window in simulated-device mode on the default scene, its session running, and the mouse
-// as the test sets it.
-class StylusWindow : public ::testing::Test {
+// The window in simulated-device mode on the default scene, its session running.
+class StylusWindow : public SculptSession {
  protected:
   void SetUp() override {
-    ASSERT_NE(std::getenv("DISPLAY"), nullptr) << "no X display: run under xvfb-run";
-    ASSERT_TRUE(glfwInit());
-    window_ = sculpt::testing::hiddenGlWindow(1280, 800);
-    ASSERT_NE(window_, nullptr);
+    SculptSession::SetUp();
+    if (HasFatalFailure()) return;
     Options options;
     options.headless = false;  // the simulation on its own thread, as in the window
-    options.width = 1280, options.height = 800;
     options.simulatedDevice = true;
     options.cage = 4;  // a coarser cage: the bunny steps near 30 Hz here while llvmpipe draws
-    app_ = std::make_unique<SculptApp>(window_, options, std::chrono::steady_clock::now(),
-                                       LoadedPreferences{}, scratch_.path() / "preferences.json");
-    app_->setInputHook([this](ImGuiIO& io, int) {
-      io.MousePos = mouse_;
-      io.MouseDown[0] = left_;
-    });
-    for (int k = 0; k < 200 && !(app_->sceneView().hasGeometry() &&
-                                 app_->sceneView().frame().physicsReady);
-         ++k)
-      app_->headlessFrame();
-    ASSERT_TRUE(app_->sceneView().frame().physicsReady);
-    for (int k = 0; k < 100 && !app_->stylus().active(); ++k) app_->headlessFrame();
-    ASSERT_TRUE(app_->stylus().active()) << "simulated-device mode starts its session";
-  }
-
-  void TearDown() override {
-    app_.reset();
-    if (window_) glfwDestroyWindow(window_);
-    glfwTerminate();
+    open(options);
+    ASSERT_TRUE(framesUntilPhysics());
+    ASSERT_TRUE(framesUntil([this] { return app_->stylus().active(); }))
+        << "simulated-device mode starts its session";
   }
 
   // Presses on the bunny's lowest point (far from the pinned top), after a frame hovering there
   // (the depth under the cursor). Returns the point pressed.
   ImVec2 pressOnTheLowestPoint() {
-    const Points& rest = app_->sceneView().geometry()->restPositions;
+    const Points& rest = geometry().restPositions;
     Eigen::Index low = 0;
     rest.col(1).minCoeff(&low);
-    const Eigen::Vector3d grab = rest.row(low).transpose() + Eigen::Vector3d(0, 0.3, 0);
-    const ViewRect view = app_->viewRect();
-    const int w = static_cast<int>(view.max.x - view.min.x),
-              h = static_cast<int>(view.max.y - view.min.y);
-    const glm::vec3 p = app_->camera().project(glm::vec3(grab.x(), grab.y(), grab.z()), w, h);
-    mouse_ = ImVec2(view.min.x + p.x, view.min.y + p.y);
-    app_->headlessFrame();
-    left_ = true;
-    return mouse_;
+    const ImVec2 at = screen(rest.row(low).transpose() + Eigen::Vector3d(0, 0.3, 0));
+    pointer_.x = at.x, pointer_.y = at.y;
+    frames(1);
+    pointer_.left = true;
+    return at;
   }
 
   // Drag step k of 40: 5 px further right, after 15 ms for the servo and the simulation.
   void dragTo(const ImVec2& start, int k) {
-    mouse_ = ImVec2(start.x + 5.0f * static_cast<float>(std::min(k, 40)), start.y);
+    pointer_.x = start.x + 5.0f * static_cast<float>(std::min(k, 40));
     std::this_thread::sleep_for(std::chrono::milliseconds(15));
   }
-
-  test::ScratchDirectory scratch_{"stylus_window"};
-  GLFWwindow* window_ = nullptr;
-  std::unique_ptr<SculptApp> app_;
-  ImVec2 mouse_{-1e6f, -1e6f};
-  bool left_ = false;
 };
 
 TEST_F(StylusWindow, SimulatedDeviceMidPullShowsTheForceInTheMeterAndTheBackground) {
@@ -99,8 +63,8 @@ TEST_F(StylusWindow, SimulatedDeviceMidPullShowsTheForceInTheMeterAndTheBackgrou
   // the background by 15%, clear of the grey's rounding. A frame shows the status it read as it
   // began, which the servo changes a thousand times a second (and cuts once its probe is 100 ms
   // old), so the frame is chosen by what it showed, and its own tint is checked.
-  const char* images = std::getenv("SCULPT_SESSION_IMAGES");
-  const fs::path shot = (images ? fs::path(images) : scratch_.path()) / "stylus-simulated-pull.png";
+  const fs::path shot =
+      (images_.empty() ? folder_ : fs::path(images_)) / "stylus-simulated-pull.png";
 #if defined(SCULPT_SANITIZED)
   // A step here takes seconds: the force shows in a frame soon after each, so the drag waits
   // for one from its start.
@@ -150,8 +114,7 @@ TEST_F(StylusWindow, SimulatedDeviceMidPullShowsTheForceInTheMeterAndTheBackgrou
   EXPECT_NEAR(red, expectedRed, 1) << "the background is tinted by the force shown";
   EXPECT_NEAR(green, expectedGreen, 1);
   EXPECT_GT(red, green + 2);
-  left_ = false;
-  app.headlessFrame();
+  release();
 }
 
 // The window closed while the stylus pulls: the session's thread queues the stroke's updates on
